@@ -1,0 +1,1 @@
+"""PolyGolf engine: rigid polygons in an esper pipeline. Nothing here imports arcade."""

@@ -1,0 +1,16 @@
+from dataclasses import dataclass
+
+from engine.components.collider import Material
+from engine.polygon import Outline, Vec
+
+
+@dataclass(slots=True)
+class Wall:
+    """A static obstacle, stored in world coordinates as convex pieces with their outward normals."""
+
+    outline: Outline
+    pieces: tuple[Outline, ...]
+    normals: tuple[tuple[Vec, ...], ...]
+    material: Material
+    aabb: tuple[float, float, float, float]  # min x, min y, max x, max y
+    piece_aabbs: tuple[tuple[float, float, float, float], ...]

@@ -1,0 +1,113 @@
+"""Contact manifolds between two bodies, merged across convex pieces.
+
+A non-convex body touches a wall through several convex pieces. Solving each piece's contact on its
+own is the original PolyGolf fault (a star landing flat on two tips got two full impulses). Here every
+point between the same two bodies that shares a normal goes into one manifold, reduced to the two
+points that span the contact, and the solver treats those two points as one block.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from engine.collide import RawContact
+from engine.components.body import Body
+from engine.components.collider import Material
+
+# Normals closer than this (cosine) are the same contact plane.
+SAME_NORMAL_COS = math.cos(math.radians(2.0))
+
+
+@dataclass(slots=True)
+class ContactPoint:
+    x: float
+    y: float
+    separation: float
+    key: tuple  # (other piece, own piece, feature): matches this point across substeps
+    restitution: float
+    friction: float
+    # Local geometry for non-linear position correction: the reference face in its body's frame and
+    # the incident point in its body's frame.
+    ref_is_a: bool = True
+    local_normal: tuple[float, float] = (0.0, 0.0)
+    local_face: tuple[float, float] = (0.0, 0.0)
+    local_clip: tuple[float, float] = (0.0, 0.0)
+    # Solver state.
+    ra_x: float = 0.0
+    ra_y: float = 0.0
+    rb_x: float = 0.0
+    rb_y: float = 0.0
+    normal_mass: float = 0.0
+    tangent_mass: float = 0.0
+    normal_impulse: float = 0.0
+    tangent_impulse: float = 0.0
+    push_impulse: float = 0.0
+    approach_speed: float = 0.0  # relative normal velocity before solving; negative when closing
+
+
+@dataclass(slots=True)
+class Manifold:
+    """Up to two points between body A and body B sharing one normal (from A to B)."""
+
+    entity_a: int
+    entity_b: int  # -1 for the static world
+    body_a: Body
+    body_b: Body
+    nx: float
+    ny: float
+    points: list[ContactPoint] = field(default_factory=list)
+    # Block solver data for two-point manifolds (filled by the solver).
+    k11: float = 0.0
+    k12: float = 0.0
+    k22: float = 0.0
+    block: bool = False
+
+
+def _to_local(body: Body, x: float, y: float) -> tuple[float, float]:
+    c, s = math.cos(body.angle), math.sin(body.angle)
+    dx, dy = x - body.x, y - body.y
+    return c * dx + s * dy, -s * dx + c * dy
+
+
+def _rotate_to_local(body: Body, x: float, y: float) -> tuple[float, float]:
+    c, s = math.cos(body.angle), math.sin(body.angle)
+    return c * x + s * y, -s * x + c * y
+
+
+def make_point(raw: RawContact, normal: tuple[float, float], key: tuple, body_a: Body, body_b: Body,
+               material: Material, ngs: bool) -> ContactPoint:
+    point = ContactPoint(x=raw.x, y=raw.y, separation=raw.separation, key=key,
+                         restitution=material.restitution, friction=material.friction, ref_is_a=raw.ref_is_a)
+    if ngs:
+        ref, inc = (body_a, body_b) if raw.ref_is_a else (body_b, body_a)
+        face_normal = normal if raw.ref_is_a else (-normal[0], -normal[1])
+        point.local_normal = _rotate_to_local(ref, *face_normal)
+        point.local_face = _to_local(ref, raw.face_x, raw.face_y)
+        point.local_clip = _to_local(inc, raw.clip_x, raw.clip_y)
+    return point
+
+
+def reduce_points(points: list[ContactPoint], nx: float, ny: float) -> list[ContactPoint]:
+    """Keep the two points that span the contact along the tangent (the deepest breaks ties)."""
+    if len(points) <= 2:
+        return points
+    tx, ty = ny, -nx
+    lo = min(points, key=lambda p: (p.x * tx + p.y * ty, p.separation))
+    hi = max(points, key=lambda p: (p.x * tx + p.y * ty, -p.separation))
+    if lo is hi:
+        return [min(points, key=lambda p: p.separation)]
+    return [lo, hi]
+
+
+def group_by_normal(raw: list[tuple[float, float, ContactPoint]]) -> list[tuple[float, float, list[ContactPoint]]]:
+    """Collect (normal, point) pairs into planes of (nearly) equal normal."""
+    groups: list[tuple[float, float, list[ContactPoint]]] = []
+    for nx, ny, point in raw:
+        for gx, gy, members in groups:
+            if gx * nx + gy * ny >= SAME_NORMAL_COS:
+                members.append(point)
+                break
+        else:
+            groups.append((nx, ny, [point]))
+    return groups

@@ -1,0 +1,50 @@
+"""Accuracy knobs and the named presets that set them.
+
+The presets' values are chosen from the measured error/cost front (`polygolf bench accuracy`,
+docs/accuracy.md); every preset keeps continuous collision on because a shot at full speed must never
+pass through a thin wall, whatever the preset.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from typing import Literal
+
+PositionCorrection = Literal["split", "ngs", "none"]
+POSITION_CORRECTIONS: tuple[str, ...] = ("split", "ngs", "none")
+
+
+@dataclass(frozen=True, slots=True)
+class Knobs:
+    substeps: int = 4  # substeps per 1/60 s frame
+    iterations: int = 8  # velocity iterations per substep
+    position_iterations: int = 3  # split-impulse or NGS sweeps per substep
+    ccd: bool = True  # continuous collision against walls
+    position_correction: PositionCorrection = "split"
+    warm_start: bool = True
+
+    def __post_init__(self) -> None:
+        if not 1 <= self.substeps <= 64:
+            raise ValueError(f"substeps must be 1..64, got {self.substeps}")
+        if not 1 <= self.iterations <= 100:
+            raise ValueError(f"iterations must be 1..100, got {self.iterations}")
+        if self.position_correction not in POSITION_CORRECTIONS:
+            raise ValueError(f"position_correction must be one of {POSITION_CORRECTIONS}")
+
+    def with_(self, **changes: object) -> "Knobs":
+        return replace(self, **changes)
+
+
+PRESETS: dict[str, Knobs] = {
+    "fast": Knobs(substeps=2, iterations=4, position_iterations=2, ccd=True, position_correction="split"),
+    "balanced": Knobs(substeps=4, iterations=8, position_iterations=3, ccd=True, position_correction="split"),
+    "accurate": Knobs(substeps=8, iterations=16, position_iterations=4, ccd=True, position_correction="ngs"),
+}
+DEFAULT_PRESET = "balanced"
+
+
+def preset(name: str) -> Knobs:
+    try:
+        return PRESETS[name]
+    except KeyError:
+        raise ValueError(f"unknown preset {name!r}; choose one of {', '.join(PRESETS)}") from None

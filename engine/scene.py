@@ -1,0 +1,149 @@
+"""Physics scenes (`content/scenes/*.yaml`): the typed form of the design notes' scene contract.
+
+Angles are degrees in YAML and radians everywhere after loading. A body's `position` is where its
+centroid goes; a `vertices` shape is re-centred on its centroid.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Annotated, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, Strict, model_validator
+
+from engine import polygon
+from engine.presets import PRESETS
+from engine.yamlsource import load
+
+Number = Annotated[float, Strict()]
+Positive = Annotated[float, Strict(), Field(gt=0)]
+NonNegative = Annotated[float, Strict(), Field(ge=0)]
+Count = Annotated[int, Strict()]
+Point = tuple[Number, Number]
+EFFECTS = ("drag", "spin", "friction", "restitution", "ccd")
+Effect = Literal["drag", "spin", "friction", "restitution", "ccd"]
+
+
+class Strict_(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class RandomShape(Strict_):
+    seed: Count
+    vertices: Annotated[int, Strict(), Field(ge=polygon.MIN_SIDES, le=polygon.MAX_SIDES)]
+
+
+class ShapeSpec(Strict_):
+    """Exactly one of regular / star / vertices / random; `radius` for all but `vertices`."""
+
+    regular: Annotated[int, Strict(), Field(ge=polygon.MIN_SIDES, le=polygon.MAX_SIDES)] | None = None
+    star: tuple[Count, Count] | None = None
+    vertices: list[Point] | None = None
+    random: RandomShape | None = None
+    radius: Positive | None = None
+
+    @model_validator(mode="after")
+    def _one_kind(self) -> ShapeSpec:
+        kinds = [k for k in ("regular", "star", "vertices", "random") if getattr(self, k) is not None]
+        if len(kinds) != 1:
+            raise ValueError("give exactly one of regular, star, vertices, random")
+        if kinds[0] == "vertices":
+            if self.radius is not None:
+                raise ValueError("radius does not apply to a vertices shape")
+        elif self.radius is None:
+            raise ValueError(f"a {kinds[0]} shape needs a radius")
+        self.outline()  # raises PolygonError (a ValueError) with the reason
+        return self
+
+    def outline(self) -> polygon.Outline:
+        """Counter-clockwise outline about the centroid."""
+        if self.regular is not None:
+            raw = polygon.regular_polygon(self.regular, self.radius)
+        elif self.star is not None:
+            raw = polygon.star_polygon(self.star[0], self.star[1], self.radius)
+        elif self.random is not None:
+            raw = polygon.random_polygon(self.random.seed, self.random.vertices, self.radius)
+        else:
+            raw = self.vertices
+        return polygon.normalise(raw)[0]
+
+    def label(self) -> str:
+        if self.regular is not None:
+            return f"{self.regular}-gon"
+        if self.star is not None:
+            return f"star {{{self.star[0]}/{self.star[1]}}}"
+        if self.random is not None:
+            return f"random #{self.random.seed} ({self.random.vertices} vertices)"
+        return f"polygon ({len(self.vertices)} vertices)"
+
+
+class DragSpec(Strict_):
+    linear: NonNegative = 0.0
+    angular: NonNegative = 0.0
+
+
+class BodySpec(Strict_):
+    name: str
+    shape: ShapeSpec
+    angle: Number = 0.0  # degrees
+    position: Point
+    velocity: Point = (0.0, 0.0)
+    spin: Number = 0.0  # rad/s
+    density: Positive = 1.0
+    restitution: NonNegative = 0.5
+    friction: NonNegative = 0.2
+    drag: DragSpec = DragSpec()
+
+
+class BoxSpec(Strict_):
+    center: Point
+    half: tuple[Positive, Positive]
+    angle: Number = 0.0  # degrees
+
+    def outline(self) -> list[tuple[float, float]]:
+        (cx, cy), (hx, hy) = self.center, self.half
+        c, s = math.cos(math.radians(self.angle)), math.sin(math.radians(self.angle))
+        return [(cx + c * x - s * y, cy + s * x + c * y) for x, y in ((-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy))]
+
+
+class WallSpec(Strict_):
+    box: BoxSpec | None = None
+    polygon: list[Point] | None = None
+    restitution: NonNegative = 1.0
+    friction: NonNegative = 1.0
+
+    @model_validator(mode="after")
+    def _one_kind(self) -> WallSpec:
+        if (self.box is None) == (self.polygon is None):
+            raise ValueError("a wall is either a box or a polygon")
+        self.outline()
+        return self
+
+    def outline(self) -> list[tuple[float, float]]:
+        """World-space CCW outline (not re-centred: walls stay where they are written)."""
+        raw = self.box.outline() if self.box is not None else self.polygon
+        local, (cx, cy) = polygon.normalise(raw)
+        return [(x + cx, y + cy) for x, y in local]
+
+
+class Scene(Strict_):
+    name: str
+    preset: Literal[tuple(PRESETS)] | None = None  # type: ignore[valid-type]
+    effects: list[Effect] | None = None
+    bodies: Annotated[list[BodySpec], Field(min_length=1)]
+    walls: list[WallSpec] = []
+
+    @model_validator(mode="after")
+    def _unique_names(self) -> Scene:
+        seen = set()
+        for body in self.bodies:
+            if body.name in seen:
+                raise ValueError(f"two bodies are named {body.name!r}")
+            seen.add(body.name)
+        return self
+
+
+def load_scene(path: str | Path) -> Scene:
+    """Load and validate a scene; raises ContentError with file, line and field."""
+    return load(Scene, path)

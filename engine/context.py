@@ -17,11 +17,13 @@ class PhysicsContext:
     knobs: Knobs
     effects: frozenset[str]
     static_grid: SpatialGrid
+    gravity: tuple[float, float] = (0.0, 0.0)  # m/s²
     static_body: Body = field(default_factory=lambda: Body(x=0.0, y=0.0))
     # body entity -> candidate (wall entity, piece index) pairs, from the broadphase
     wall_candidates: dict[int, list[tuple[int, int]]] = field(default_factory=dict)
     body_pairs: list[tuple[int, int]] = field(default_factory=list)
     manifolds: list[Manifold] = field(default_factory=list)
+    touching: set[int] = field(default_factory=set)  # entities in this substep's manifolds
     # Measurements, reset by whoever reads them.
     max_penetration: float = 0.0
     bounces: int = 0

@@ -20,6 +20,9 @@ def derive_effects(scene: Scene, substeps: int = 4) -> dict[str, str]:
         b = dragged[0]
         reasons["drag"] = f"{b.name} has drag (linear {b.drag.linear:g}/s, angular {b.drag.angular:g}/s)"
 
+    if scene.gravity != (0.0, 0.0):
+        reasons["gravity"] = f"the scene pushes every body at ({scene.gravity[0]:g}, {scene.gravity[1]:g}) m/s²"
+
     spinning = [b for b in bodies if b.spin]
     if spinning:
         reasons["spin"] = f"{spinning[0].name} starts spinning at {spinning[0].spin:g} rad/s"

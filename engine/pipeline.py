@@ -20,6 +20,7 @@ from engine.simulation import Simulation
 from engine.systems.broadphase import BroadphaseProcessor
 from engine.systems.ccd import CCDProcessor
 from engine.systems.drag import DragProcessor
+from engine.systems.gravity import GravityProcessor
 from engine.systems.integrate import IntegrateProcessor
 from engine.systems.narrowphase import NarrowphaseProcessor
 from engine.systems.resolve import ResolveProcessor
@@ -69,12 +70,16 @@ def processors_for(ctx: PhysicsContext, effects: Iterable[str], contacts: bool, 
                    cell_size: float) -> list[esper.Processor]:
     """The substep's processors in order, each present only if an effect or the content needs it."""
     effects = set(effects)
-    procs: list[esper.Processor] = []
-    if "drag" in effects:
-        procs.append(DragProcessor(ctx))
-    procs.append(IntegrateProcessor(ctx))
+    # Positions advance first with the velocities the solver left, then forces change velocities,
+    # and the contact solver constrains those before they move anything: symplectic Euler in the
+    # order that keeps a ball pressed into a corner by a slope from sinking in and creeping.
+    procs: list[esper.Processor] = [IntegrateProcessor(ctx)]
     if "spin" in effects:
         procs.append(SpinProcessor(ctx))
+    if "gravity" in effects:
+        procs.append(GravityProcessor(ctx))
+    if "drag" in effects:
+        procs.append(DragProcessor(ctx))
     if contacts:
         if "ccd" in effects and ctx.knobs.ccd and has_walls:
             procs.append(CCDProcessor(ctx))
@@ -127,7 +132,7 @@ def build_scene(scene: Scene, knobs: Knobs | str | None = None, effects: Iterabl
         for k, box in enumerate(wall.piece_aabbs):
             grid.insert((ent, k), box)
 
-    ctx = PhysicsContext(knobs=knobs, effects=frozenset(chosen), static_grid=grid)
+    ctx = PhysicsContext(knobs=knobs, effects=frozenset(chosen), static_grid=grid, gravity=scene.gravity)
     contacts = bool(scene.walls) or len(scene.bodies) > 1
     procs = processors_for(ctx, chosen, contacts, bool(scene.walls), cell)
     return Simulation(world, ctx, procs, names, preset_name=preset_name, reasons=chosen, scene_name=scene.name)

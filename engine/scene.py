@@ -21,8 +21,8 @@ Positive = Annotated[float, Strict(), Field(gt=0)]
 NonNegative = Annotated[float, Strict(), Field(ge=0)]
 Count = Annotated[int, Strict()]
 Point = tuple[Number, Number]
-EFFECTS = ("drag", "spin", "friction", "restitution", "ccd")
-Effect = Literal["drag", "spin", "friction", "restitution", "ccd"]
+EFFECTS = ("drag", "gravity", "spin", "friction", "restitution", "ccd")
+Effect = Literal["drag", "gravity", "spin", "friction", "restitution", "ccd"]
 
 
 class Strict_(BaseModel):
@@ -131,6 +131,7 @@ class Scene(Strict_):
     name: str
     preset: Literal[tuple(PRESETS)] | None = None  # type: ignore[valid-type]
     effects: list[Effect] | None = None
+    gravity: Point = (0.0, 0.0)  # m/s², a constant push on every body (a tilted table)
     bodies: Annotated[list[BodySpec], Field(min_length=1)]
     walls: list[WallSpec] = []
 

@@ -10,9 +10,10 @@ MAX_CORRECTION = 0.1  # largest positional correction per substep, m
 RESTITUTION_THRESHOLD = 0.05  # slower approaches do not bounce, m/s
 BLOCK_MAX_CONDITION = 1000.0  # two-point manifolds worse conditioned than this are solved point by point
 
-# Rest detection: a body slower than these for TIME_TO_REST seconds is put to rest.
+# Rest detection: a body that moves slower than these for TIME_TO_REST seconds is put to rest.
 REST_LINEAR = 0.02  # m/s
 REST_ANGULAR = 0.05  # rad/s
+REST_SPEED_CAP = 0.1  # m/s; a body faster than this is never at rest, whatever its displacement
 TIME_TO_REST = 0.25  # s
 
 MAX_SHOT_SPEED = 25.0  # m/s; the fastest a shot can send the ball

@@ -18,6 +18,7 @@ class Metrics:
     initial_energy: float = 0.0
     max_energy: float = 0.0
     final_energy: float = 0.0
+    max_energy_rise: float = 0.0  # largest increase of kinetic energy over one substep, J
     max_penetration: float = 0.0
     nan: bool = False
     frames: int = 0
@@ -94,6 +95,8 @@ class Simulation:
                                              and math.isfinite(body.angle)):
                 metrics.nan = True
             energy += e
+        if energy - metrics.final_energy > metrics.max_energy_rise:
+            metrics.max_energy_rise = energy - metrics.final_energy
         metrics.final_energy = energy
         if energy > metrics.max_energy:
             metrics.max_energy = energy

@@ -26,6 +26,9 @@ class Body:
     push_y: float = 0.0
     push_spin: float = 0.0
 
+    def __post_init__(self) -> None:
+        self.x0, self.y0, self.angle0 = self.x, self.y, self.angle
+
     @classmethod
     def dynamic(cls, x: float, y: float, mass: float, inertia: float, **state: float) -> "Body":
         return cls(x=x, y=y, mass=mass, inertia=inertia, inv_mass=1.0 / mass,

@@ -1,14 +1,20 @@
 import esper
 
-from engine.components import Body
+from engine.components import Body, Drag
 from engine.context import PhysicsContext
-from engine.settings import REST_ANGULAR, REST_LINEAR, TIME_TO_REST
+from engine.settings import REST_ANGULAR, REST_LINEAR, REST_SPEED_CAP, TIME_TO_REST
 
 
 class IntegrateProcessor(esper.Processor):
-    """Semi-implicit Euler for position (velocities were already updated this substep), and rest
-    detection: a dynamic body slower than the rest thresholds for TIME_TO_REST is put to rest and
-    skipped by every system until something wakes it."""
+    """Semi-implicit Euler, position half: x += v·dt with the velocity the contact solver left at
+    the end of the last substep (forces then update velocities, and the solver constrains them
+    before they move anything). Also rest detection.
+
+    A body is at rest when it is touching something or slowed by drag (a free body with no drag
+    coasts for ever, and putting it to sleep would steal its momentum) and has hardly *moved* (last substep's displacement, corrections included)
+    for TIME_TO_REST: judging by displacement rather than velocity lets a ball pressed into a corner
+    by a slope fall asleep even though the slope adds velocity every substep. A body at rest has its
+    velocities zeroed and is skipped by every system until something wakes it."""
 
     name = "integrate"
 
@@ -17,12 +23,16 @@ class IntegrateProcessor(esper.Processor):
 
     def process(self) -> None:
         dt = self.ctx.dt
-        for _, body in esper.get_component(Body):
+        still_step = REST_LINEAR * dt
+        still_turn = REST_ANGULAR * dt
+        touching = self.ctx.touching
+        for ent, body in esper.get_component(Body):
             if body.asleep:
                 continue
-            if body.inv_mass > 0.0:
-                if (body.vx * body.vx + body.vy * body.vy < REST_LINEAR * REST_LINEAR
-                        and abs(body.spin) < REST_ANGULAR):
+            if body.inv_mass > 0.0 and (ent in touching or esper.has_component(ent, Drag)):
+                dx, dy = body.x - body.x0, body.y - body.y0
+                if (dx * dx + dy * dy < still_step * still_step and abs(body.angle - body.angle0) < still_turn
+                        and body.vx * body.vx + body.vy * body.vy < REST_SPEED_CAP * REST_SPEED_CAP):
                     body.still_time += dt
                     if body.still_time >= TIME_TO_REST:
                         body.asleep = True

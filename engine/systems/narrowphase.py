@@ -81,6 +81,7 @@ class NarrowphaseProcessor(esper.Processor):
                 deepest = self._emit(manifolds, raw, ea, eb, a, b, previous, deepest)
 
         ctx.manifolds = manifolds
+        ctx.touching = {m.entity_a for m in manifolds} | {m.entity_b for m in manifolds}
         ctx.max_penetration = deepest
 
     @staticmethod

@@ -1,0 +1,32 @@
+"""Shared fixtures. esper keeps its worlds in module state: every test gets a clean slate, and the
+worlds a test created are deleted afterwards. Window tests run under Xvfb (pytest-xvfb); tests that
+only render use ARCADE_HEADLESS where no GUI widget is involved."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import esper
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+SCENES = ROOT / "content" / "scenes"
+PRESET_NAMES = ("fast", "balanced", "accurate")
+
+
+@pytest.fixture(autouse=True)
+def isolated_esper_worlds():
+    before = set(esper.list_worlds())
+    yield
+    esper.switch_world("default")
+    for name in set(esper.list_worlds()) - before - {"default"}:
+        esper.delete_world(name)
+
+
+@pytest.fixture
+def world():
+    """A fresh named esper world for a test that assembles processors by hand."""
+    esper.switch_world("test-world")
+    yield "test-world"
+    esper.switch_world("default")
+    esper.delete_world("test-world")

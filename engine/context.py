@@ -28,6 +28,7 @@ class PhysicsContext:
     max_penetration: float = 0.0
     bounces: int = 0
     toi_hits: int = 0
+    cold_restarts: int = 0  # substeps whose warm start would have added energy
 
     @property
     def dt(self) -> float:

@@ -36,12 +36,15 @@ def time_of_impact(
     wall_normals: tuple[Vec, ...],
     target: float,
     tolerance: float,
+    allowance: float,
 ) -> float | None:
     """Fraction of the motion start->end at which the piece first comes within `target` of the wall.
 
     `piece` is in body coordinates and rotates about the body origin; `reach` is the largest distance
-    of its vertices from that origin. Returns None if the piece stays farther than `target` throughout,
-    or if it is already within `target` at the start (the discrete contact deals with that).
+    of its vertices from that origin. Returns None if the piece stays farther than `target` throughout.
+    A piece already touching at the start (sliding along the wall, say) is stopped only if it would
+    sink `allowance` deeper than it already is: a corner swinging into the wall while another rests
+    on it is caught, but sliding is not interrupted.
     """
     x0, y0, a0 = start
     dx, dy, da = end[0] - x0, end[1] - y0, end[2] - a0
@@ -49,33 +52,32 @@ def time_of_impact(
     general_rate = math.hypot(dx, dy) + turn
     if general_rate <= 0.0:
         return None
-    # Per unit of t, the wall face k can approach no faster than this.
-    wall_rates = [max(0.0, -(dx * nx + dy * ny)) + turn for nx, ny in wall_normals]
+    # Per unit of t, wall face k can approach no faster than this; the piece's own faces turn with
+    # it, so only the general bound holds for them.
+    rates = [max(0.0, -(dx * nx + dy * ny)) + turn for nx, ny in wall_normals]
+    rates += [general_rate] * len(piece_normals)
 
-    t = 0.0
-    for iteration in range(MAX_ITERATIONS):
+    def separations(t: float) -> list[float]:
+        """Separation along every candidate axis at time t: wall faces first, then the piece's."""
         verts = _pose_vertices(piece, x0 + t * dx, y0 + t * dy, a0 + t * da)
-        best_step = -1.0
-        distance = -math.inf
-        # The wall's faces: fixed axes with their own approach bound.
-        for k, (nx, ny) in enumerate(wall_normals):
-            wx, wy = wall[k]
-            sep = min((vx - wx) * nx + (vy - wy) * ny for vx, vy in verts)
-            distance = max(distance, sep)
-            rate = wall_rates[k]
-            if sep > target and rate == 0.0:
-                return None  # this face separates them for the whole motion
-            if rate > 0.0:
-                best_step = max(best_step, (sep - target) / rate)
-        # The piece's faces: they turn with it, so only the general bound holds.
-        for k, (nx, ny) in enumerate(_pose_normals(piece_normals, a0 + t * da)):
-            vx, vy = verts[k]
-            sep = min((wx - vx) * nx + (wy - vy) * ny for wx, wy in wall)
-            distance = max(distance, sep)
-            best_step = max(best_step, (sep - target) / general_rate)
-        if distance < target + tolerance:
-            return None if iteration == 0 else t
-        t += best_step
+        seps = [min((vx - wx) * nx + (vy - wy) * ny for vx, vy in verts)
+                for (nx, ny), (wx, wy) in zip(wall_normals, wall)]
+        seps += [min((wx - vx) * nx + (wy - vy) * ny for wx, wy in wall)
+                 for (nx, ny), (vx, vy) in zip(_pose_normals(piece_normals, a0 + t * da), verts)]
+        return seps
+
+    seps = separations(0.0)
+    # Already touching (sliding along the wall, say): only sinking `allowance` deeper counts.
+    level = target if max(seps) >= target + tolerance else min(max(seps), target) - allowance
+    t = 0.0
+    for _ in range(MAX_ITERATIONS):
+        # Any axis gives a safe step: its separation cannot fall to `level` sooner than this.
+        step = max((sep - level) / rate if rate > 0.0 else (math.inf if sep > level else 0.0)
+                   for sep, rate in zip(seps, rates))
+        t += step
         if t >= 1.0:
             return None
+        seps = separations(t)
+        if max(seps) < level + tolerance:
+            return t
     return t

@@ -39,7 +39,8 @@ class CCDProcessor(esper.Processor):
                 wall = esper.component_for_entity(wall_ent, Wall)
                 for i, piece in enumerate(col.pieces):
                     t = time_of_impact(piece, col.normals[i], col.piece_reach[i], start, end,
-                                       wall.pieces[k], wall.normals[k], TOI_TARGET, 0.25 * LINEAR_SLOP)
+                                       wall.pieces[k], wall.normals[k], TOI_TARGET, 0.25 * LINEAR_SLOP,
+                                       LINEAR_SLOP)
                     if t is not None and t < first:
                         first = t
             if first < 1.0:

@@ -4,7 +4,7 @@ from engine.collide import collide_polygons
 from engine.components import Body, Collider, Material, Wall
 from engine.contact import ContactPoint, Manifold, group_by_normal, make_point, reduce_points
 from engine.context import PhysicsContext
-from engine.settings import CONTACT_MARGIN
+from engine.settings import CONTACT_MARGIN, RESTITUTION_THRESHOLD
 
 
 def combine(a: Material, b: Material) -> Material:
@@ -27,9 +27,11 @@ class NarrowphaseProcessor(esper.Processor):
         knobs = ctx.knobs
         previous: dict[tuple, tuple[float, float]] = {}
         if knobs.warm_start:
+            # Only persistent contacts are warm-started: an impact's impulse belongs to that impact,
+            # and re-applying it to a contact that is now opening would add energy.
             for m in ctx.manifolds:
                 for p in m.points:
-                    if p.normal_impulse or p.tangent_impulse:
+                    if (p.normal_impulse or p.tangent_impulse) and p.approach_speed >= -RESTITUTION_THRESHOLD:
                         previous[(m.entity_a, m.entity_b, p.key)] = (p.normal_impulse, p.tangent_impulse)
         ngs = knobs.position_correction == "ngs"
         manifolds: list[Manifold] = []

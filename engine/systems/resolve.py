@@ -24,10 +24,25 @@ class ResolveProcessor(esper.Processor):
             return
         knobs = ctx.knobs
         solver.prepare(manifolds)
+        bodies = {id(b): b for m in manifolds for b in (m.body_a, m.body_b) if b.inv_mass > 0.0}.values()
         if knobs.warm_start:
+            saved = [(b, b.vx, b.vy, b.spin) for b in bodies]
+            before = sum(b.kinetic_energy() for b in bodies)
             solver.warm_start(manifolds)
-        for _ in range(knobs.iterations):
-            solver.solve_velocities(manifolds, self.friction)
+            self._iterate(manifolds, knobs.iterations)
+            if sum(b.kinetic_energy() for b in bodies) > before * (1.0 + 1e-12):
+                # A contact solve without restitution can only take energy away; a cold Gauss-Seidel
+                # sweep never adds any, but last substep's impulses re-applied to contacts that are
+                # now opening can. Fall back to the cold solve.
+                ctx.cold_restarts += 1
+                for b, vx, vy, spin in saved:
+                    b.vx, b.vy, b.spin = vx, vy, spin
+                for m in manifolds:
+                    for p in m.points:
+                        p.normal_impulse = p.tangent_impulse = 0.0
+                self._iterate(manifolds, knobs.iterations)
+        else:
+            self._iterate(manifolds, knobs.iterations)
 
         if knobs.position_correction == "split":
             dt = ctx.dt
@@ -45,3 +60,7 @@ class ResolveProcessor(esper.Processor):
         elif knobs.position_correction == "ngs":
             for _ in range(knobs.position_iterations):
                 solver.solve_ngs(manifolds, POSITION_BETA, LINEAR_SLOP, MAX_CORRECTION)
+
+    def _iterate(self, manifolds: list, iterations: int) -> None:
+        for _ in range(iterations):
+            solver.solve_velocities(manifolds, self.friction)

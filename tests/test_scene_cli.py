@@ -1,0 +1,123 @@
+"""Scene loading, one-line errors for malformed scenes, and `polygolf simulate` / `explain`."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import textwrap
+
+import pytest
+
+from engine.pipeline import build_scene
+from engine.scene import load_scene
+from engine.yamlsource import ContentError
+from game.cli import main
+
+from .conftest import SCENES
+
+GOOD = """\
+name: t
+bodies:
+  - name: ball
+    shape: {regular: 4, radius: 0.5}
+    position: [3.0, 0.0]
+    velocity: [-10.0, 0.0]
+walls:
+  - box: {center: [-1.0, 0.0], half: [1.0, 5.0]}
+"""
+
+
+def write(tmp_path, text, name="scene.yaml"):
+    path = tmp_path / name
+    path.write_text(textwrap.dedent(text))
+    return path
+
+
+@pytest.mark.parametrize("path", sorted(SCENES.glob("*.yaml")), ids=lambda p: p.stem)
+def test_every_shipped_scene_loads_and_runs(path):
+    with build_scene(load_scene(path)) as sim:
+        sim.run(0.5)
+        assert not sim.metrics.nan
+
+
+@pytest.mark.parametrize(
+    ("text", "line", "field", "message"),
+    [
+        (GOOD.replace("velocity: [-10.0, 0.0]", "velocity: [-10.0, fast]"), 6, "bodies[0].velocity[1]", "valid number"),
+        (GOOD.replace("    position: [3.0, 0.0]\n", ""), 3, "bodies[0].position", "missing"),
+        (GOOD.replace("    velocity:", "    colour: red\n    velocity:"), 6, "bodies[0].colour", "unknown key"),
+        (GOOD.replace("{regular: 4, radius: 0.5}", "{vertices: [[0, 0], [4, 0], [0, 3], [3, 3]]}"), 4,
+         "bodies[0].shape", "cross"),
+        (GOOD.replace("{regular: 4, radius: 0.5}", "{regular: 4}"), 4, "bodies[0].shape", "needs a radius"),
+        (GOOD.replace("{regular: 4, radius: 0.5}", "{regular: 2, radius: 0.5}"), 4, "bodies[0].shape.regular",
+         "greater than or equal to 3"),
+        (GOOD.replace("name: t", "name: t\npreset: turbo"), 2, "preset", "Input should be"),
+        (GOOD.replace("name: t", "name: t\neffects: [wind]"), 2, "effects[0]", "Input should be"),
+        (GOOD.replace("half: [1.0, 5.0]", "half: [1.0, -5.0]"), 8, "walls[0].box.half[1]", "greater than 0"),
+        (GOOD.replace("    position: [3.0, 0.0]", "    position: [3.0, 0.0]\n    position: [1.0, 0.0]"), 6,
+         "bodies[0].position", "duplicate key"),
+        (GOOD.replace("bodies:", "bodies: [oops"), 3, "(yaml)", "expected"),
+    ],
+)
+def test_malformed_scene_names_file_line_and_field(tmp_path, text, line, field, message):
+    path = write(tmp_path, text)
+    with pytest.raises(ContentError) as info:
+        load_scene(path)
+    err = info.value
+    assert (err.file, err.line, err.field) == (str(path), line, field)
+    assert message in err.message
+    assert str(err).startswith(f"{path}:{line}: {field}: ")
+    assert "\n" not in str(err)
+
+
+def test_simulate_json_follows_the_contract(capsys):
+    assert main(["simulate", str(SCENES / "flat-wall.yaml"), "--seconds", "1", "--preset", "fast", "--json"]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert set(report) >= {"scene", "preset", "steps", "systems", "bodies", "metrics"}
+    assert (report["scene"], report["preset"], report["steps"]) == ("flat-wall", "fast", 60)
+    (body,) = report["bodies"]
+    assert set(body) >= {"name", "position", "angle", "velocity", "spin", "at_rest"}
+    assert body["velocity"][0] == pytest.approx(5.0, rel=0.01)
+    assert body["angle"] == pytest.approx(45.0)
+    metrics = report["metrics"]
+    assert set(metrics) >= {"max_penetration", "max_energy_ratio", "final_energy_ratio", "nan", "wall_ms"}
+    assert metrics["max_energy_ratio"] == pytest.approx(1.0)
+    assert metrics["final_energy_ratio"] == pytest.approx(0.25, rel=0.02)
+    assert metrics["nan"] is False
+
+
+def test_simulate_malformed_scene_exits_2_with_one_line(tmp_path, capsys):
+    path = write(tmp_path, GOOD.replace("velocity: [-10.0, 0.0]", "velocity: fast"))
+    assert main(["simulate", str(path), "--json"]) == 2
+    captured = capsys.readouterr()
+    assert captured.out == ""
+    lines = captured.err.strip().splitlines()
+    assert len(lines) == 1 and f"{path}:6: bodies[0].velocity:" in lines[0]
+
+
+def test_missing_scene_file_exits_2(tmp_path, capsys):
+    assert main(["simulate", str(tmp_path / "nope.yaml")]) == 2
+    assert "nope.yaml" in capsys.readouterr().err
+
+
+def test_listed_effects_decide_the_pipeline(tmp_path):
+    path = write(tmp_path, GOOD.replace("name: t", "name: t\neffects: [restitution]"))
+    with build_scene(load_scene(path)) as sim:
+        assert sim.system_names == ["integrate", "broadphase", "narrowphase", "resolve", "restitution"]
+    with build_scene(load_scene(write(tmp_path, GOOD, "derived.yaml"))) as sim:
+        assert sim.system_names == ["integrate", "spin", "ccd", "broadphase", "narrowphase", "resolve",
+                                    "restitution"]
+
+
+def test_explain_says_why(capsys):
+    assert main(["explain", str(SCENES / "corner.yaml")]) == 0
+    out = capsys.readouterr().out
+    assert "drag" in out and "ball has drag" in out
+    assert "friction on" in out
+
+
+def test_installed_command_runs():
+    out = subprocess.run([sys.executable, "-m", "game.cli", "simulate", str(SCENES / "long-roll.yaml"),
+                          "--seconds", "1", "--json"], capture_output=True, text=True, check=True).stdout
+    assert json.loads(out)["systems"] == ["integrate", "spin", "drag"]

@@ -31,7 +31,7 @@ class Knobs:
         if self.position_correction not in POSITION_CORRECTIONS:
             raise ValueError(f"position_correction must be one of {POSITION_CORRECTIONS}")
 
-    def with_(self, **changes: object) -> "Knobs":
+    def with_(self, **changes: object) -> Knobs:
         return replace(self, **changes)
 
 

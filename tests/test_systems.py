@@ -42,7 +42,10 @@ def box(cx, cy, hx, hy):
     return [(cx - hx, cy - hy), (cx + hx, cy - hy), (cx + hx, cy + hy), (cx - hx, cy + hy)]
 
 
-def ball(x=0.0, y=0.0, outline=SQUARE, angle=math.pi / 4, material=Material(0.5, 0.0), **state):
+BOUNCY = Material(0.5, 0.0)
+
+
+def ball(x=0.0, y=0.0, outline=SQUARE, angle=math.pi / 4, material=BOUNCY, **state):
     body = make_body(outline, (x, y), 1.0, angle)
     for key, value in state.items():
         setattr(body, key, value)

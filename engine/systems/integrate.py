@@ -10,11 +10,11 @@ class IntegrateProcessor(esper.Processor):
     the end of the last substep (forces then update velocities, and the solver constrains them
     before they move anything). Also rest detection.
 
-    A body is at rest when it is touching something or slowed by drag (a free body with no drag
-    coasts for ever, and putting it to sleep would steal its momentum) and has hardly *moved* (last substep's displacement, corrections included)
-    for TIME_TO_REST: judging by displacement rather than velocity lets a ball pressed into a corner
-    by a slope fall asleep even though the slope adds velocity every substep. A body at rest has its
-    velocities zeroed and is skipped by every system until something wakes it."""
+    A body is put to rest when it is touching something or slowed by drag (a free body with no drag
+    coasts for ever: sleeping it would steal its momentum) and has hardly *moved* for TIME_TO_REST.
+    Judging by displacement (corrections included) rather than velocity lets a ball pressed into a
+    corner by a slope fall asleep although the slope adds velocity every substep. A body at rest has
+    its velocities zeroed and is skipped by every system until something wakes it."""
 
     name = "integrate"
 

@@ -75,7 +75,8 @@ class NarrowphaseProcessor(esper.Processor):
                         continue
                     normal, contacts = hit
                     for rc in contacts:
-                        raw.append((normal[0], normal[1], make_point(rc, normal, (j, i, rc.feature), a, b, material, ngs)))
+                        point = make_point(rc, normal, (j, i, rc.feature), a, b, material, ngs)
+                        raw.append((normal[0], normal[1], point))
             if raw:
                 if a.asleep or b.asleep:
                     a.wake()

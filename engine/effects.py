@@ -15,10 +15,11 @@ def derive_effects(scene: Scene, substeps: int = 4) -> dict[str, str]:
     walls, bodies = scene.walls, scene.bodies
     contacts = bool(walls) or len(bodies) > 1
 
-    dragged = [b for b in bodies if b.drag.linear or b.drag.angular]
+    dragged = [b for b in bodies if b.drag.any]
     if dragged:
         b = dragged[0]
-        reasons["drag"] = f"{b.name} has drag (linear {b.drag.linear:g}/s, angular {b.drag.angular:g}/s)"
+        reasons["drag"] = f"{b.name} has drag (linear {b.drag.linear:g}/s, angular {b.drag.angular:g}/s, " \
+                          f"rolling {b.drag.rolling:g} m/s²)"
 
     if scene.gravity != (0.0, 0.0):
         reasons["gravity"] = f"the scene pushes every body at ({scene.gravity[0]:g}, {scene.gravity[1]:g}) m/s²"

@@ -120,8 +120,8 @@ def build_scene(scene: Scene, knobs: Knobs | str | None = None, effects: Iterabl
         collider = make_collider(outline, Material(spec.restitution, spec.friction))
         radius = max(radius, collider.radius)
         components: list[object] = [body, collider, Name(spec.name)]
-        if spec.drag.linear or spec.drag.angular:
-            components.append(Drag(spec.drag.linear, spec.drag.angular))
+        if spec.drag.any:
+            components.append(Drag(**spec.drag.model_dump()))
         names[esper.create_entity(*components)] = spec.name
 
     cell = cell_size or max(1.0, 4.0 * radius)

@@ -79,8 +79,14 @@ class ShapeSpec(Strict_):
 
 
 class DragSpec(Strict_):
-    linear: NonNegative = 0.0
-    angular: NonNegative = 0.0
+    linear: NonNegative = 0.0  # 1/s, exponential
+    angular: NonNegative = 0.0  # 1/s, exponential
+    rolling: NonNegative = 0.0  # m/s², constant deceleration
+    rolling_angular: NonNegative = 0.0  # rad/s², constant deceleration
+
+    @property
+    def any(self) -> bool:
+        return bool(self.linear or self.angular or self.rolling or self.rolling_angular)
 
 
 class BodySpec(Strict_):

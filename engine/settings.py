@@ -18,3 +18,5 @@ TIME_TO_REST = 0.25  # s
 
 MAX_SHOT_SPEED = 25.0  # m/s; the fastest a shot can send the ball
 MAX_SHOT_SPIN = 30.0  # rad/s; the angular part of a shot is capped on its own
+SHOT_POWER = 5.0  # m/s of shot for each metre of arrow
+SPIN_RATIO = 1.5  # a shot may spin the ball's rim at most this many times its linear speed

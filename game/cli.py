@@ -11,6 +11,7 @@ import json
 import sys
 from collections.abc import Sequence
 
+from engine.course import CONTENT_DIR
 from engine.presets import PRESETS
 
 EXIT_CONTENT = 2
@@ -38,6 +39,55 @@ def _simulate(args: argparse.Namespace) -> int:
     return 0
 
 
+def _validate(args: argparse.Namespace) -> int:
+    from engine.validate import validate_paths
+    from game.theme import load_theme
+
+    def check_theme(path):
+        load_theme(path)
+        return []
+
+    count, problems = validate_paths(args.paths or [CONTENT_DIR], extra={"theme": check_theme})
+    for problem in problems:
+        print(problem, file=sys.stderr)
+    print(f"{count} files checked, {len(problems)} problem{'s' if len(problems) != 1 else ''}")
+    return 1 if problems else 0
+
+
+def _window(run, *args) -> int:
+    from game.app import NoDisplay
+
+    try:
+        run(*args)
+    except NoDisplay as exc:
+        print(f"polygolf: {exc}", file=sys.stderr)
+        return 1
+    return 0
+
+
+def _menu(args: argparse.Namespace) -> int:
+    from game.app import run_menu
+
+    return _window(run_menu)
+
+
+def _play(args: argparse.Namespace) -> int:
+    from game.app import run_play
+
+    return _window(run_play, args.course, args.hole, args.theme, args.shape, args.preset)
+
+
+def _render(args: argparse.Namespace) -> int:
+    from pathlib import Path
+
+    from game.app import render_hole
+
+    out = _window(render_hole, args.course, args.hole, args.theme, args.shape, Path(args.out))
+    if out == 0:
+        print(args.out)
+    return out
+
+
 def _explain(args: argparse.Namespace) -> int:
     from engine.explain import explain
 
@@ -47,7 +97,7 @@ def _explain(args: argparse.Namespace) -> int:
 
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="polygolf", description="Mini golf with a polygon for a ball.")
-    sub = parser.add_subparsers(dest="command")
+    sub = parser.add_subparsers(dest="command", description="with no command, the game opens at its menu")
 
     sim = sub.add_parser("simulate", help="run a physics scene headless and report the result")
     sim.add_argument("scene", help="scene YAML file")
@@ -57,8 +107,28 @@ def build_parser() -> argparse.ArgumentParser:
     sim.add_argument("--json", action="store_true", help="print one JSON object")
     sim.set_defaults(run=_simulate)
 
+    play = sub.add_parser("play", help="play a hole of a course straight away")
+    play.add_argument("--course", default="meadow", help="course name (default meadow)")
+    play.add_argument("--hole", type=int, default=1, help="hole number (default 1)")
+    play.add_argument("--theme", default=None, help="grass, sand, night ...")
+    play.add_argument("--shape", default=None, help="pentagon, star-5-2, 7 (sides), random-SEED ...")
+    play.add_argument("--preset", choices=list(PRESETS), default="balanced")
+    play.set_defaults(run=_play)
+
+    render = sub.add_parser("render", help="draw a hole to a PNG without a window")
+    render.add_argument("course")
+    render.add_argument("hole", type=int)
+    render.add_argument("--theme", default=None)
+    render.add_argument("--shape", default=None)
+    render.add_argument("--out", required=True, help="PNG file to write")
+    render.set_defaults(run=_render)
+
+    val = sub.add_parser("validate", help="check content files (default: all of content/)")
+    val.add_argument("paths", nargs="*", help="files or folders")
+    val.set_defaults(run=_validate)
+
     exp = sub.add_parser("explain", help="list a scene's or hole's pipeline and why each system is in it")
-    exp.add_argument("path", help="scene YAML file, or COURSE:HOLE")
+    exp.add_argument("path", help="scene or hole YAML file, or COURSE:HOLE (meadow:3)")
     exp.add_argument("--preset", choices=list(PRESETS), default=None)
     exp.set_defaults(run=_explain)
     return parser
@@ -69,13 +139,14 @@ def main(argv: Sequence[str] | None = None) -> int:
 
     parser = build_parser()
     args = parser.parse_args(argv)
-    if args.command is None:
-        parser.print_help()
-        return 0
+    run = getattr(args, "run", _menu)
     try:
-        return args.run(args)
+        return run(args)
     except ContentError as exc:
         print(f"polygolf: {exc}", file=sys.stderr)
+        return EXIT_CONTENT
+    except (KeyError, ValueError) as exc:  # unknown course, theme, shape, hole number
+        print(f"polygolf: {exc.args[0] if exc.args else exc}", file=sys.stderr)
         return EXIT_CONTENT
 
 

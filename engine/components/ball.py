@@ -1,0 +1,9 @@
+from dataclasses import dataclass
+
+
+@dataclass(slots=True)
+class Ball:
+    """Marks the player's ball; remembers where it last came to rest (for hazards that put it back)."""
+
+    rest_x: float
+    rest_y: float

@@ -1,0 +1,235 @@
+"""Golf content (content/holes/): the tile library, holes and courses, validated with file and line.
+
+The original PolyGolf's design, as data: a hole is a grid of tiles; a tile is a *border set* (which of
+its four sides are walled, open, or a gate) plus an *obstacle pattern* (named polygons in tile
+coordinates, metres from the tile's centre). A few border sets and patterns make many holes. The
+first tile of a hole holds the tee, the last the cup, both placed at the tile's centre.
+"""
+
+from __future__ import annotations
+
+import os
+from collections import deque
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Annotated, Literal
+
+from pydantic import Field, Strict
+
+from engine.scene import Count, DragSpec, NonNegative, Point, Positive, Strict_, WallSpec
+from engine.yamlsource import ContentError, Loc, format_loc, line_of, load_yaml, validate
+
+CONTENT_DIR = Path(os.environ.get("POLYGOLF_CONTENT", Path(__file__).resolve().parent.parent / "content"))
+HOLES_DIR = CONTENT_DIR / "holes"
+SIDES = ("n", "e", "s", "w")
+STEP = {"n": (0, 1), "e": (1, 0), "s": (0, -1), "w": (-1, 0)}
+OPPOSITE = {"n": "s", "e": "w", "s": "n", "w": "e"}
+
+
+class Gate(Strict_):
+    gate: Positive  # clear width of the opening, m, centred on the side
+
+
+Side = Literal["open", "wall"] | Gate
+
+
+class BorderSet(Strict_):
+    """Each side is `wall` (the default), `open` to the neighbouring tile, or a `{gate: width}`."""
+
+    n: Side = "wall"
+    e: Side = "wall"
+    s: Side = "wall"
+    w: Side = "wall"
+
+
+class BallSpec(Strict_):
+    radius: Positive = 0.35
+    density: Positive = 1.0
+    restitution: NonNegative = 0.6
+    friction: NonNegative = 0.3
+
+
+class CupSpec(Strict_):
+    radius: Positive = 0.45
+    max_speed: Positive = 4.0  # m/s at the centre, falling linearly to zero at the rim
+
+
+class TileLibrary(Strict_):
+    tile_size: Positive = 6.0
+    wall_thickness: Positive = 0.3
+    max_strokes: Annotated[int, Strict(), Field(ge=1, le=99)] = 10
+    ball: BallSpec = BallSpec()
+    green: DragSpec = DragSpec(linear=0.4, angular=1.0, rolling=1.2, rolling_angular=2.0)
+    cup: CupSpec = CupSpec()
+    border_sets: dict[str, BorderSet]
+    patterns: dict[str, list[WallSpec]]
+
+
+class TilePlacement(Strict_):
+    at: tuple[Count, Count]  # [column, row]; row grows upwards
+    borders: str
+    pattern: str = "empty"
+    rotate: Literal[0, 90, 180, 270] = 0  # turns the pattern (not the borders), degrees
+
+
+class Launch(Strict_):
+    """For the collision test level: the ball leaves the tee at this velocity, again every `every` s."""
+
+    velocity: Point
+    every: Positive = 5.0
+
+
+class HoleSpec(Strict_):
+    name: str
+    par: Annotated[int, Strict(), Field(ge=1, le=20)]
+    max_strokes: Annotated[int, Strict(), Field(ge=1, le=99)] | None = None
+    tiles: Annotated[list[TilePlacement], Field(min_length=1)]
+    green: DragSpec | None = None  # overrides the library's
+    launch: Launch | None = None
+
+
+class CourseSpec(Strict_):
+    name: str
+    holes: Annotated[list[str], Field(min_length=1)]
+
+
+class CoursesFile(Strict_):
+    courses: Annotated[list[CourseSpec], Field(min_length=1)]
+
+
+# --- loading ----------------------------------------------------------------------------------------
+
+def load_library(path: str | Path = HOLES_DIR / "tiles.yaml") -> TileLibrary:
+    data, lines = load_yaml(path)
+    library = validate(TileLibrary, data, lines, path)
+    if "empty" not in library.patterns:
+        raise ContentError(path, line_of(("patterns",), lines), "patterns", "needs an 'empty' pattern")
+    return library
+
+
+@dataclass(slots=True)
+class Hole:
+    """A validated hole: its spec, where it came from and the library it uses."""
+
+    id: str
+    path: Path
+    spec: HoleSpec
+    library: TileLibrary
+
+
+def load_hole(path: str | Path, library: TileLibrary) -> Hole:
+    """Load a hole and check it against the library: names exist, tiles do not overlap, open sides
+    meet open sides, and the cup can be reached from the tee."""
+    path = Path(path)
+    data, lines = load_yaml(path)
+    spec = validate(HoleSpec, data, lines, path)
+
+    def fail(loc: Loc, message: str) -> ContentError:
+        return ContentError(path, line_of(loc, lines), format_loc(loc), message)
+
+    placed: dict[tuple[int, int], int] = {}
+    for i, tile in enumerate(spec.tiles):
+        if tile.borders not in library.border_sets:
+            raise fail(("tiles", i, "borders"), f"unknown border set {tile.borders!r}")
+        if tile.pattern not in library.patterns:
+            raise fail(("tiles", i, "pattern"), f"unknown pattern {tile.pattern!r}")
+        if tile.at in placed:
+            raise fail(("tiles", i, "at"), f"tile {list(tile.at)} is already used by tiles[{placed[tile.at]}]")
+        placed[tile.at] = i
+
+    for i, tile in enumerate(spec.tiles):
+        borders = library.border_sets[tile.borders]
+        for side in SIDES:
+            mine = getattr(borders, side)
+            if mine == "wall":
+                continue
+            dx, dy = STEP[side]
+            j = placed.get((tile.at[0] + dx, tile.at[1] + dy))
+            if j is None:
+                raise fail(("tiles", i, "borders"), f"side {side} of {tile.borders!r} opens onto no tile: "
+                                                    "the ball could leave the hole")
+            theirs = getattr(library.border_sets[spec.tiles[j].borders], OPPOSITE[side])
+            if theirs == "wall":
+                raise fail(("tiles", i, "borders"), f"side {side} is open but tiles[{j}] walls its side "
+                                                    f"{OPPOSITE[side]}")
+
+    if len(spec.tiles) > 1 and not _reachable(spec, library):
+        raise fail(("tiles", len(spec.tiles) - 1), "the cup cannot be reached from the tee through open borders")
+    hole = Hole(id=path.stem, path=path, spec=spec, library=library)
+    _check_tee_and_cup(hole, fail)
+    return hole
+
+
+def _reachable(spec: HoleSpec, library: TileLibrary) -> bool:
+    index = {t.at: t for t in spec.tiles}
+    start, goal = spec.tiles[0].at, spec.tiles[-1].at
+    seen, queue = {start}, deque([start])
+    while queue:
+        at = queue.popleft()
+        if at == goal:
+            return True
+        borders = library.border_sets[index[at].borders]
+        for side in SIDES:
+            if getattr(borders, side) == "wall":
+                continue
+            nxt = (at[0] + STEP[side][0], at[1] + STEP[side][1])
+            if nxt in index and nxt not in seen:
+                seen.add(nxt)
+                queue.append(nxt)
+    return False
+
+
+def _check_tee_and_cup(hole: Hole, fail) -> None:
+    from engine.hole import layout_hole, point_clearance
+
+    layout = layout_hole(hole)
+    ball_r = hole.library.ball.radius
+    for (x, y), what, i in ((layout.tee, "tee", 0), (layout.cup, "cup", len(hole.spec.tiles) - 1)):
+        need = ball_r if what == "tee" else hole.library.cup.radius
+        if point_clearance(layout, x, y) < need:
+            raise fail(("tiles", i, "pattern"), f"the {what} at the tile's centre is blocked by an obstacle")
+
+
+@dataclass(slots=True)
+class Course:
+    """A course as it will be played: its holes in order, each loaded or the error that broke it."""
+
+    id: str
+    name: str
+    holes: list[Hole | ContentError] = field(default_factory=list)
+
+    @property
+    def playable(self) -> list[Hole]:
+        return [h for h in self.holes if isinstance(h, Hole)]
+
+
+def load_courses(path: str | Path = HOLES_DIR / "courses.yaml", library: TileLibrary | None = None) -> list[Course]:
+    """Every course with its holes. A broken hole is kept as its ContentError so the rest of the
+    course plays; an unknown hole name is such an error too."""
+    path = Path(path)
+    library = library or load_library(path.parent / "tiles.yaml")
+    data, lines = load_yaml(path)
+    spec = validate(CoursesFile, data, lines, path)
+    courses = []
+    for c, course in enumerate(spec.courses):
+        loaded = Course(id=course.name.lower().replace(" ", "-"), name=course.name)
+        for h, hole_id in enumerate(course.holes):
+            hole_path = path.parent / f"{hole_id}.yaml"
+            if not hole_path.exists():
+                loc = ("courses", c, "holes", h)
+                loaded.holes.append(ContentError(path, line_of(loc, lines), format_loc(loc),
+                                                 f"no hole file {hole_path.name}"))
+                continue
+            try:
+                loaded.holes.append(load_hole(hole_path, library))
+            except ContentError as exc:
+                loaded.holes.append(exc)
+        courses.append(loaded)
+    return courses
+
+
+def find_course(courses: list[Course], name: str) -> Course:
+    for course in courses:
+        if name in (course.id, course.name):
+            return course
+    raise KeyError(f"no course {name!r}; courses: {', '.join(c.id for c in courses)}")

@@ -1,0 +1,39 @@
+import esper
+
+from engine.components import Ball, Body, Collider, ShotInput
+from engine.context import PhysicsContext
+from engine.shot import shot_velocity
+
+
+class ShotProcessor(esper.Processor):
+    """Turns a requested shot into velocity, only while the ball is at rest; remembers that resting
+    place and announces the shot with the esper event "shot" (the scoring system counts it)."""
+
+    name = "shot"
+
+    def __init__(self, ctx: PhysicsContext) -> None:
+        self.ctx = ctx
+
+    def process(self) -> None:
+        for ent, (body, collider, shot) in esper.get_components(Body, Collider, ShotInput):
+            if not shot.pending:
+                continue
+            shot.pending = False
+            at_rest = body.asleep or (body.vx == 0.0 and body.vy == 0.0 and body.spin == 0.0)
+            if not at_rest:
+                shot.rejected += 1
+                continue
+            rx, ry = shot.origin[0] - body.x, shot.origin[1] - body.y
+            dvx, dvy, dspin = shot_velocity(body.mass, body.inertia, collider.radius, rx, ry, *shot.vector,
+                                            rotates=body.inv_inertia > 0.0)
+            if dvx == 0.0 and dvy == 0.0:
+                continue
+            ball = esper.try_component(ent, Ball)
+            if ball is not None:
+                ball.rest_x, ball.rest_y = body.x, body.y  # where a hazard puts it back
+            body.wake()
+            body.vx += dvx
+            body.vy += dvy
+            body.spin += dspin
+            shot.accepted += 1
+            esper.dispatch_event("shot", ent)

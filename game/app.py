@@ -1,0 +1,105 @@
+"""The arcade window and the ways into it: the menu, a hole straight away, or a picture of a hole."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+WINDOW_SIZE = (1280, 720)
+TITLE = "PolyGolf"
+
+
+class NoDisplay(RuntimeError):
+    """No screen to open a window on; str() says what to do instead."""
+
+
+def _check_display() -> None:
+    if os.name == "posix" and not os.environ.get("DISPLAY") and not os.environ.get("WAYLAND_DISPLAY") \
+            and not os.environ.get("ARCADE_HEADLESS"):
+        raise NoDisplay("no display to open a window on (DISPLAY is not set); run it under a desktop or "
+                        "xvfb-run, or draw a hole to a file with `polygolf render`")
+
+
+def make_window(visible: bool = True):
+    """The game window (resizable). Raises NoDisplay when there is no screen."""
+    _check_display()
+    import arcade
+
+    try:
+        window = arcade.Window(*WINDOW_SIZE, TITLE, resizable=True, visible=visible, antialiasing=True)
+    except Exception as exc:  # pyglet raises several kinds when it cannot reach a display
+        raise NoDisplay(f"cannot open a window: {exc}") from None
+    window.set_minimum_size(640, 400)
+    return window
+
+
+def run_menu() -> None:
+    from game.session import Game
+    from game.views.menu import MenuView
+
+    window = make_window()
+    window.show_view(MenuView(Game.load()))
+    window.run()
+
+
+def run_play(course: str, hole: int, theme: str | None, shape: str | None, preset: str) -> None:
+    import arcade
+
+    from engine.course import find_course
+    from game.session import Game
+    from game.shapes import parse_shape
+    from game.theme import find_theme
+    from game.views.play import PlayView
+
+    game = Game.load()
+    game.course_index = game.courses.index(find_course(game.courses, course))
+    if theme:
+        game.theme_index = game.themes.index(find_theme(game.themes, theme))
+    if shape:
+        game.set_shape(*parse_shape(shape))
+    game.preset = preset
+    game.guide_seen = True
+    if not 1 <= hole <= len(game.course.holes):
+        raise ValueError(f"{game.course.name} has holes 1 to {len(game.course.holes)}")
+    window = make_window()
+    window.show_view(PlayView(game, game.start_round(hole - 1)))
+    arcade.run()
+
+
+def render_hole(course: str, hole: int, theme: str | None, shape: str | None, out: Path,
+                size: tuple[int, int] = WINDOW_SIZE) -> Path:
+    """Draw a hole as the play view shows it, headless, to a PNG."""
+    os.environ.setdefault("ARCADE_HEADLESS", "1")
+    import arcade
+
+    from engine.course import find_course
+    from game.session import Game
+    from game.shapes import parse_shape
+    from game.theme import find_theme
+    from game.views.play import PlayView
+
+    game = Game.load()
+    game.course_index = game.courses.index(find_course(game.courses, course))
+    if theme:
+        game.theme_index = game.themes.index(find_theme(game.themes, theme))
+    if shape:
+        game.set_shape(*parse_shape(shape))
+    if not 1 <= hole <= len(game.course.holes):
+        raise ValueError(f"{game.course.name} has holes 1 to {len(game.course.holes)}")
+    broken = game.course.holes[hole - 1]
+    if isinstance(broken, Exception):
+        raise broken
+    try:
+        window = arcade.Window(*size, TITLE, visible=False)
+    except Exception as exc:
+        raise NoDisplay(f"cannot open an offscreen GL context: {exc}") from None
+    try:
+        view = PlayView(game, game.start_round(hole - 1))
+        window.show_view(view)
+        view.on_draw()
+        image = arcade.get_image(0, 0, *window.get_framebuffer_size())
+        out.parent.mkdir(parents=True, exist_ok=True)
+        image.save(out)
+    finally:
+        window.close()
+    return out

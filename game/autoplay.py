@@ -1,0 +1,151 @@
+"""A scripted golfer: plans shots from the hole's geometry alone. Used by the tests (a whole round
+played by real shots), the benchmarks (a ball that keeps moving) and the play view's hint.
+
+It never reads the physics' future: it aims at the farthest point of the shortest clear path that it
+can see, and picks the arrow length whose roll, under the green's drag law, stops there (or just
+past the cup, so the ball crosses it slowly).
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+
+from engine.hole import HoleLayout, HoleWorld
+from engine.polygon import Vec
+from engine.scene import DragSpec
+from engine.settings import MAX_SHOT_SPEED, SHOT_POWER
+
+CUP_OVERSHOOT = 0.3  # m past the cup's centre: the ball is slow there, so it drops
+
+
+def roll_distance(speed: float, drag: DragSpec) -> float:
+    """How far a ball sent at `speed` rolls under dv/dt = -k·v - c before it stops."""
+    k, c = drag.linear, drag.rolling
+    if c <= 0.0:
+        return math.inf if k <= 0.0 else speed / k
+    if k <= 0.0:
+        return speed * speed / (2.0 * c)
+    stop = math.log1p(k * speed / c) / k
+    return (speed - c * stop) / k
+
+
+def speed_for(distance: float, drag: DragSpec) -> float:
+    """The launch speed that rolls `distance` (capped at the fastest shot), by bisection."""
+    lo, hi = 0.0, MAX_SHOT_SPEED
+    if roll_distance(hi, drag) <= distance:
+        return hi
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if roll_distance(mid, drag) < distance:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
+
+
+def _segment_distance(p: Vec, q: Vec, a: Vec, b: Vec) -> float:
+    """Shortest distance between segments pq and ab."""
+
+    def point_seg(x: Vec, u: Vec, v: Vec) -> float:
+        ex, ey = v[0] - u[0], v[1] - u[1]
+        length2 = ex * ex + ey * ey
+        t = 0.0 if length2 == 0 else max(0.0, min(1.0, ((x[0] - u[0]) * ex + (x[1] - u[1]) * ey) / length2))
+        return math.hypot(x[0] - u[0] - t * ex, x[1] - u[1] - t * ey)
+
+    def orient(u: Vec, v: Vec, w: Vec) -> float:
+        return (v[0] - u[0]) * (w[1] - u[1]) - (v[1] - u[1]) * (w[0] - u[0])
+
+    if (orient(p, q, a) > 0) != (orient(p, q, b) > 0) and (orient(a, b, p) > 0) != (orient(a, b, q) > 0):
+        return 0.0
+    return min(point_seg(p, a, b), point_seg(q, a, b), point_seg(a, p, q), point_seg(b, p, q))
+
+
+class AutoGolfer:
+    def __init__(self, layout: HoleLayout, ball_radius: float, drag: DragSpec) -> None:
+        self.layout = layout
+        self.drag = drag
+        self.clearance = 0.9 * ball_radius
+        self.edges = [(o[i], o[(i + 1) % len(o)]) for o in layout.wall_outlines() for i in range(len(o))]
+        size = layout.tile_size
+        nodes: list[Vec] = list(layout.route)
+        for x0, y0, _, _ in layout.floor:
+            for i in range(1, 5):
+                for j in range(1, 5):
+                    nodes.append((x0 + size * i / 5, y0 + size * j / 5))
+        self.nodes = [n for n in nodes if self._free(n)] + [layout.cup]
+        self.cup = len(self.nodes) - 1
+        self.links: list[list[tuple[int, float]]] = [[] for _ in self.nodes]
+        for i, a in enumerate(self.nodes):
+            for j in range(i + 1, len(self.nodes)):
+                b = self.nodes[j]
+                d = math.dist(a, b)
+                if d < 1.6 * size and self.clear(a, b):
+                    self.links[i].append((j, d))
+                    self.links[j].append((i, d))
+
+    def _free(self, p: Vec) -> bool:
+        from engine.hole import point_clearance
+
+        return point_clearance(self.layout, *p) >= self.clearance * 1.3
+
+    def clear(self, a: Vec, b: Vec) -> bool:
+        return all(_segment_distance(a, b, u, v) >= self.clearance for u, v in self.edges)
+
+    def path(self, start: Vec) -> list[Vec]:
+        """Shortest clear path from `start` to the cup through the sample points."""
+        dist = {-1: 0.0}
+        prev: dict[int, int] = {}
+        heap = [(0.0, -1)]
+        while heap:
+            d, i = heapq.heappop(heap)
+            if d > dist.get(i, math.inf):
+                continue
+            if i == self.cup:
+                break
+            neighbours = ([(j, math.dist(start, n)) for j, n in enumerate(self.nodes) if self.clear(start, n)]
+                          if i == -1 else self.links[i])
+            for j, w in neighbours:
+                if d + w < dist.get(j, math.inf):
+                    dist[j] = d + w
+                    prev[j] = i
+                    heapq.heappush(heap, (d + w, j))
+        if self.cup not in prev:
+            return [self.layout.cup]
+        out, i = [], self.cup
+        while i != -1:
+            out.append(self.nodes[i])
+            i = prev[i]
+        return out[::-1]
+
+    def plan(self, position: Vec) -> tuple[Vec, Vec]:
+        """(grab point, arrow) for a shot from `position`: grabbed at the centroid, so no spin."""
+        route = self.path(position)
+        target = next((p for p in reversed(route) if self.clear(position, p)), route[0])
+        distance = math.dist(position, target)
+        if target == self.layout.cup:
+            distance += CUP_OVERSHOOT
+        if distance < 1e-6:
+            return position, (0.0, 0.0)
+        speed = speed_for(distance, self.drag)
+        ux, uy = (target[0] - position[0]) / math.dist(position, target), (target[1] - position[1]) / math.dist(
+            position, target)
+        return position, (ux * speed / SHOT_POWER, uy * speed / SHOT_POWER)
+
+
+def golfer_for(world: HoleWorld) -> AutoGolfer:
+    spec, lib = world.hole.spec, world.hole.library
+    return AutoGolfer(world.layout, lib.ball.radius, spec.green or lib.green)
+
+
+def play_hole(world: HoleWorld, max_frames: int = 60 * 120) -> int:
+    """Play a hole to the end with planned shots; returns the frames it took."""
+    golfer = golfer_for(world)
+    frames = 0
+    while not world.state.finished and frames < max_frames:
+        if world.ball_at_rest:
+            origin, arrow = golfer.plan((world.ball.x, world.ball.y))
+            world.shoot(origin, arrow)
+        world.step()
+        frames += 1
+    return frames

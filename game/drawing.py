@@ -1,0 +1,114 @@
+"""Drawing a hole and the ball with batched shape lists, in world coordinates (metres).
+
+Nothing here imports arcade.gui, so `polygolf render` can draw in a headless (EGL) context.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import arcade
+from arcade.shape_list import (
+    ShapeElementList,
+    create_ellipse_filled,
+    create_ellipse_outline,
+    create_line_loop,
+    create_polygon,
+    create_rectangle_filled,
+)
+
+from engine import polygon
+from engine.hole import HoleLayout
+from engine.settings import MAX_SHOT_SPEED, SHOT_POWER
+from game.theme import Theme
+
+HUD_HEIGHT = 44  # pixels
+MARGIN = 1.0  # metres of background around the hole
+
+
+def _filled(shapes: ShapeElementList, outline: Sequence[polygon.Vec], fill, edge, edge_width: float) -> None:
+    """A simple polygon, convex or not: filled piece by piece, then outlined once."""
+    for piece in polygon.convex_pieces(tuple(outline)):
+        shapes.append(create_polygon(list(piece), fill))
+    shapes.append(create_line_loop(list(outline), edge, edge_width))
+
+
+class HoleArt:
+    """The static picture of a hole: floor, walls, obstacles, tee and cup, one batched draw call."""
+
+    def __init__(self, layout: HoleLayout, theme: Theme) -> None:
+        shapes: ShapeElementList = ShapeElementList()
+        size = layout.tile_size
+        for k, (x0, y0, x1, y1) in enumerate(layout.floor):
+            colour = theme.rgba("green_alt" if (round(x0 / size) + round(y0 / size)) % 2 else "green")
+            shapes.append(create_rectangle_filled((x0 + x1) / 2, (y0 + y1) / 2, x1 - x0 + 0.02, y1 - y0 + 0.02, colour))
+        tx, ty = layout.tee
+        shapes.append(create_rectangle_filled(tx, ty, 0.9, 0.9, theme.rgba("tee")))
+        shapes.append(create_rectangle_filled(tx, ty, 0.8, 0.8, theme.rgba("green")))
+        cx, cy = layout.cup
+        cup_r = layout.cup_radius
+        shapes.append(create_ellipse_filled(cx, cy, 2 * cup_r + 0.12, 2 * cup_r + 0.12, theme.rgba("cup_rim"), num_segments=48))
+        shapes.append(create_ellipse_filled(cx, cy, 2 * cup_r, 2 * cup_r, theme.rgba("cup"), num_segments=48))
+        for outline in layout.borders:
+            _filled(shapes, outline, theme.rgba("wall"), theme.rgba("wall_edge"), 0.06)
+        for outline, _ in layout.obstacles:
+            _filled(shapes, outline, theme.rgba("obstacle"), theme.rgba("obstacle_edge"), 0.06)
+        self.shapes = shapes
+        self.cup_radius = cup_r
+
+    def draw(self) -> None:
+        self.shapes.draw()
+
+
+class BallArt:
+    """The ball, built once in its own frame and moved and turned each frame."""
+
+    def __init__(self, outline: Sequence[polygon.Vec], theme: Theme, scale: float = 1.0) -> None:
+        local = [(x * scale, y * scale) for x, y in outline]
+        self.shapes: ShapeElementList = ShapeElementList()
+        _filled(self.shapes, local, theme.rgba("ball"), theme.rgba("ball_edge"), 0.05 * max(scale, 1.0))
+        # A notch on the first vertex, so spin can be seen on round-ish shapes.
+        x, y = local[0]
+        self.shapes.append(create_ellipse_outline(0.7 * x, 0.7 * y, 0.12 * scale, 0.12 * scale,
+                                                  theme.rgba("ball_edge"), 0.04 * scale))
+
+    def draw(self, x: float, y: float, angle: float) -> None:
+        self.shapes.position = (x, y)
+        self.shapes.angle = -math.degrees(angle)  # shape lists turn clockwise
+        self.shapes.draw()
+
+
+def draw_arrow(origin: polygon.Vec, tip: polygon.Vec, theme: Theme) -> float:
+    """The aiming arrow from where the ball was grabbed to the pointer, coloured by power.
+    Returns the power fraction (1.0 = the strongest shot)."""
+    full = MAX_SHOT_SPEED / SHOT_POWER
+    dx, dy = tip[0] - origin[0], tip[1] - origin[1]
+    length = math.hypot(dx, dy)
+    if length < 1e-6:
+        return 0.0
+    fraction = min(1.0, length / full)
+    ux, uy = dx / length, dy / length
+    shown = min(length, full)
+    end = (origin[0] + ux * shown, origin[1] + uy * shown)
+    weak, strong = theme.rgba("arrow"), theme.rgba("arrow_strong")
+    colour = tuple(round(a + (b - a) * fraction) for a, b in zip(weak, strong))
+    arcade.draw_line(origin[0], origin[1], end[0], end[1], colour, 0.12)
+    head = 0.45
+    left = (end[0] - ux * head - uy * head * 0.6, end[1] - uy * head + ux * head * 0.6)
+    right = (end[0] - ux * head + uy * head * 0.6, end[1] - uy * head - ux * head * 0.6)
+    arcade.draw_polygon_filled([end, left, right], colour)
+    return fraction
+
+
+def fit_camera(camera: arcade.Camera2D, bounds: tuple[float, float, float, float], width: int, height: int,
+               hud: int = HUD_HEIGHT) -> None:
+    """Zoom and centre the camera so the hole fills the window below the HUD bar."""
+    x0, y0, x1, y1 = bounds
+    w, h = x1 - x0 + 2 * MARGIN, y1 - y0 + 2 * MARGIN
+    usable = max(1, height - hud)
+    zoom = min(width / w, usable / h)
+    camera.match_window()
+    camera.zoom = zoom
+    # Centre the hole in the area under the HUD.
+    camera.position = ((x0 + x1) / 2, (y0 + y1) / 2 + hud / 2 / zoom)

@@ -1,0 +1,49 @@
+"""The balls a player can choose: regular polygons, stars and seeded random shapes."""
+
+from __future__ import annotations
+
+import random
+import re
+
+from engine.scene import ShapeSpec
+
+CATALOGUE: list[tuple[str, ShapeSpec]] = [
+    ("Triangle", ShapeSpec(regular=3, radius=1.0)),
+    ("Square", ShapeSpec(regular=4, radius=1.0)),
+    ("Pentagon", ShapeSpec(regular=5, radius=1.0)),
+    ("Hexagon", ShapeSpec(regular=6, radius=1.0)),
+    ("Heptagon", ShapeSpec(regular=7, radius=1.0)),
+    ("Octagon", ShapeSpec(regular=8, radius=1.0)),
+    ("Decagon", ShapeSpec(regular=10, radius=1.0)),
+    ("Dodecagon", ShapeSpec(regular=12, radius=1.0)),
+    ("Star {5/2}", ShapeSpec(star=(5, 2), radius=1.0)),
+    ("Star {7/2}", ShapeSpec(star=(7, 2), radius=1.0)),
+    ("Star {7/3}", ShapeSpec(star=(7, 3), radius=1.0)),
+    ("Star {8/3}", ShapeSpec(star=(8, 3), radius=1.0)),
+]
+
+
+def random_shape(rng: random.Random | None = None) -> tuple[str, ShapeSpec]:
+    rng = rng or random.Random()
+    seed = rng.randrange(1_000_000)
+    vertices = rng.randint(4, 9)
+    return f"Random #{seed}", ShapeSpec(random={"seed": seed, "vertices": vertices}, radius=1.0)
+
+
+def parse_shape(text: str) -> tuple[str, ShapeSpec]:
+    """A shape from the command line: a catalogue name ('pentagon', 'star-5-2'), a side count
+    ('6'), or 'random-SEED'."""
+    key = text.strip().lower()
+    for label, spec in CATALOGUE:
+        slug = re.sub(r"[^a-z0-9]+", "-", label.lower()).strip("-")
+        if key in (label.lower(), slug):
+            return label, spec
+    if key.isdigit():
+        sides = int(key)
+        return f"{sides}-gon", ShapeSpec(regular=sides, radius=1.0)
+    match = re.fullmatch(r"random-(\d+)", key)
+    if match:
+        seed = int(match.group(1))
+        return f"Random #{seed}", ShapeSpec(random={"seed": seed, "vertices": 4 + seed % 6}, radius=1.0)
+    names = ", ".join(re.sub(r"[^a-z0-9]+", "-", label.lower()).strip("-") for label, _ in CATALOGUE)
+    raise ValueError(f"unknown shape {text!r}; try one of: {names}, a side count, or random-SEED")

@@ -1,0 +1,1 @@
+"""The screens: one arcade.View each."""

@@ -1,0 +1,117 @@
+"""The menu: Play, Environment (themes), Polygon (shapes), Random polygon, Course, Guide, Quit;
+the chosen polygon is drawn beside the buttons."""
+
+from __future__ import annotations
+
+import arcade
+from arcade.gui import UIAnchorLayout, UIBoxLayout, UIView
+
+from engine.hole import ball_outline
+from game.drawing import BallArt
+from game.session import Game
+from game.shapes import random_shape
+from game.views.widgets import themed_button, title
+
+
+class MenuView(UIView):
+    def __init__(self, game: Game) -> None:
+        super().__init__()
+        self.game = game
+        self.spin = 0.0
+        self.build()
+
+    def build(self) -> None:
+        game, theme = self.game, self.game.theme
+        self.ui.clear()
+        self.background_color = theme.rgba("background")
+        self.title = title("PolyGolf", theme, 48)
+        self.subtitle = arcade.Text("mini golf with a polygon for a ball", 0, 0, theme.rgba("text"), 14,
+                                    anchor_x="center", anchor_y="center", italic=True)
+        self.shape_caption = arcade.Text(game.shape_label, 0, 0, theme.rgba("text"), 18, anchor_x="center",
+                                         anchor_y="center")
+        column = UIBoxLayout(vertical=True, space_between=10)
+        self.buttons = {}
+        for key, text, action in (
+            ("play", "Play", self.on_play),
+            ("theme", f"Environment: {theme.name}", self.on_theme),
+            ("shape", f"Polygon: {game.shape_label}", self.on_shape),
+            ("random", "Random polygon", self.on_random),
+            ("course", f"Course: {game.course.name}", self.on_course),
+            ("guide", "How to play", self.on_guide),
+            ("quit", "Quit", self.on_quit),
+        ):
+            button = themed_button(theme, text)
+            button.on_click = action  # type: ignore[method-assign]
+            column.add(button)
+            self.buttons[key] = button
+        anchor = UIAnchorLayout()
+        anchor.add(column, anchor_x="center_x", anchor_y="center_y", align_x=-180, align_y=-40)
+        self.ui.add(anchor)
+        self.ball_art = BallArt(ball_outline(game.shape, 1.0), theme, scale=1.0)
+        self.preview = arcade.Camera2D()
+
+    # Actions: each changes the game's choices and rebuilds the screen in the new look.
+    def on_play(self, _event=None) -> None:
+        from game.views.guide import GuideView
+        from game.views.play import PlayView
+
+        round_ = self.game.start_round()
+        if not self.game.guide_seen:
+            self.window.show_view(GuideView(self.game, then=lambda: PlayView(self.game, round_)))
+        else:
+            self.window.show_view(PlayView(self.game, round_))
+
+    def on_theme(self, _event=None) -> None:
+        self.game.next_theme()
+        self.build()
+
+    def on_shape(self, _event=None) -> None:
+        self.game.next_shape()
+        self.build()
+
+    def on_random(self, _event=None) -> None:
+        self.game.set_shape(*random_shape())
+        self.build()
+
+    def on_course(self, _event=None) -> None:
+        self.game.next_course()
+        self.build()
+
+    def on_guide(self, _event=None) -> None:
+        from game.views.guide import GuideView
+
+        self.window.show_view(GuideView(self.game, then=lambda: MenuView(self.game)))
+
+    def on_quit(self, _event=None) -> None:
+        self.window.close()
+
+    def on_key_press(self, symbol: int, modifiers: int) -> None:
+        if symbol in (arcade.key.ENTER, arcade.key.RETURN, arcade.key.SPACE):
+            self.on_play()
+        elif symbol == arcade.key.ESCAPE:
+            self.on_quit()
+
+    def on_update(self, delta_time: float) -> None:
+        self.spin += 0.6 * delta_time
+
+    def on_draw_before_ui(self) -> None:
+        w, h = self.window.width, self.window.height
+        self.title.position = (w / 2, h - 70)
+        self.subtitle.position = (w / 2, h - 115)
+        self.title.draw()
+        self.subtitle.draw()
+        # The chosen polygon, large, to the right of the buttons.
+        cx, cy = w / 2 + 230, h / 2 - 40
+        radius = min(110.0, h / 5)
+        with self._scaled(cx, cy, radius):
+            self.ball_art.draw(0.0, 0.0, self.spin)
+        self.shape_caption.position = (cx, cy - radius - 30)
+        self.shape_caption.draw()
+
+    def _scaled(self, cx: float, cy: float, radius: float):
+        """A camera that shows the unit-radius ball `radius` pixels big, centred at (cx, cy)."""
+        w, h = self.window.width, self.window.height
+        self.preview.match_window()
+        self.preview.zoom = radius
+        self.preview.position = (-(cx - w / 2) / radius, -(cy - h / 2) / radius)
+        return self.preview.activate()

@@ -1,0 +1,193 @@
+"""The play screen: the hole in the theme's colours, the HUD, and the shot arrow.
+
+Press on the ball and drag: the arrow shows direction and power, where you grabbed the ball sets the
+spin, release shoots, Esc cancels. R restarts the hole; Esc (not aiming) pauses.
+"""
+
+from __future__ import annotations
+
+import math
+
+import arcade
+
+from engine.hole import HoleWorld
+from engine.settings import MAX_SHOT_SPEED, SHOT_POWER
+from game.drawing import HUD_HEIGHT, BallArt, HoleArt, draw_arrow, fit_camera
+from game.session import Game, Round
+
+GRAB_SLACK = 1.25  # a press this many ball radii from the centre still grabs the ball
+FINISH_PAUSE = 1.0  # seconds between the ball dropping and the next screen
+
+
+class PlayView(arcade.View):
+    def __init__(self, game: Game, round_: Round) -> None:
+        super().__init__()
+        self.game = game
+        self.round = round_
+        self.camera = arcade.Camera2D()
+        theme = game.theme
+        self.background_color = theme.rgba("background")
+        self.hud_texts = {
+            "course": arcade.Text("", 16, 0, theme.rgba("text"), 15, anchor_y="center", bold=True),
+            "hole": arcade.Text("", 0, 0, theme.rgba("text"), 15, anchor_x="center", anchor_y="center"),
+            "strokes": arcade.Text("", 0, 0, theme.rgba("text"), 15, anchor_x="right", anchor_y="center"),
+        }
+        self.banner = arcade.Text("", 0, 0, theme.rgba("text"), 13, anchor_x="center", anchor_y="center",
+                                  multiline=True, width=900, align="center")
+        self.banner_time = 0.0
+        self.world: HoleWorld | None = None
+        self.start_hole()
+
+    # -- hole lifecycle ---------------------------------------------------------------------------
+
+    def start_hole(self) -> None:
+        if self.world is not None:
+            self.world.close()
+        hole = self.round.current()
+        if hole is None:
+            self.world = None
+            return
+        self.world = HoleWorld(hole, self.game.shape, self.game.preset)
+        self.hole_art = HoleArt(self.world.layout, self.game.theme)
+        self.ball_art = BallArt(self.world.outline, self.game.theme)
+        self.aiming = False
+        self.grab = self.tip = (0.0, 0.0)
+        self.finished_for = 0.0
+        self.finish_text: arcade.Text | None = None
+        if self.round.skipped:
+            self.show_banner("\n".join(self.round.skipped[-2:]))
+        self.fit()
+        self.update_hud()
+
+    def restart_hole(self) -> None:
+        self.start_hole()
+
+    def show_banner(self, text: str, seconds: float = 6.0) -> None:
+        self.banner.text = text
+        self.banner_time = seconds
+
+    # -- layout -----------------------------------------------------------------------------------
+
+    def fit(self) -> None:
+        if self.world is None:
+            return
+        fit_camera(self.camera, self.world.layout.bounds, self.window.width, self.window.height)
+        top = self.window.height - HUD_HEIGHT / 2
+        self.hud_texts["course"].position = (16, top)
+        self.hud_texts["hole"].position = (self.window.width / 2, top)
+        self.hud_texts["strokes"].position = (self.window.width - 16, top)
+        self.banner.position = (self.window.width / 2, self.window.height - HUD_HEIGHT - 40)
+
+    def on_resize(self, width: int, height: int) -> None:
+        self.fit()
+
+    def on_show_view(self) -> None:
+        self.fit()
+
+    def update_hud(self) -> None:
+        if self.world is None:
+            return
+        spec, state = self.world.hole.spec, self.world.state
+        self.hud_texts["course"].text = self.round.course.name
+        self.hud_texts["hole"].text = f"Hole {self.round.number} of {self.round.hole_count}: {spec.name}  ·  Par {spec.par}"
+        extra = f" (+{state.penalties} penalty)" if state.penalties else ""
+        self.hud_texts["strokes"].text = f"Strokes {state.score}{extra}"
+
+    # -- input ------------------------------------------------------------------------------------
+
+    def to_world(self, x: float, y: float) -> tuple[float, float]:
+        point = self.camera.unproject((x, y))
+        return point[0], point[1]
+
+    def on_mouse_press(self, x: int, y: int, button: int, modifiers: int) -> None:
+        world = self.world
+        if world is None or button != arcade.MOUSE_BUTTON_LEFT or world.state.finished or not world.ball_at_rest:
+            return
+        wx, wy = self.to_world(x, y)
+        if math.hypot(wx - world.ball.x, wy - world.ball.y) <= GRAB_SLACK * world.collider.radius:
+            self.aiming = True
+            self.grab = self.tip = (wx, wy)
+
+    def on_mouse_drag(self, x: int, y: int, dx: int, dy: int, buttons: int, modifiers: int) -> None:
+        if self.aiming:
+            self.tip = self.to_world(x, y)
+
+    def on_mouse_release(self, x: int, y: int, button: int, modifiers: int) -> None:
+        if not self.aiming or button != arcade.MOUSE_BUTTON_LEFT:
+            return
+        self.aiming = False
+        self.tip = self.to_world(x, y)
+        vector = (self.tip[0] - self.grab[0], self.tip[1] - self.grab[1])
+        if math.hypot(*vector) * SHOT_POWER < 0.05:
+            return  # a click, not a shot
+        full = MAX_SHOT_SPEED / SHOT_POWER
+        length = math.hypot(*vector)
+        if length > full:
+            vector = (vector[0] * full / length, vector[1] * full / length)
+        self.world.shoot(self.grab, vector)
+
+    def on_key_press(self, symbol: int, modifiers: int) -> None:
+        if symbol == arcade.key.ESCAPE:
+            if self.aiming:
+                self.aiming = False
+            else:
+                from game.views.pause import PauseView
+
+                self.window.show_view(PauseView(self.game, self))
+        elif symbol == arcade.key.R:
+            self.restart_hole()
+
+    # -- frame ------------------------------------------------------------------------------------
+
+    def on_update(self, delta_time: float) -> None:
+        world = self.world
+        if world is None:
+            return
+        world.step()
+        self.banner_time = max(0.0, self.banner_time - delta_time)
+        self.update_hud()
+        if world.state.finished:
+            self.finished_for += delta_time
+            if self.finished_for >= FINISH_PAUSE:
+                self.finish_hole()
+
+    def finish_hole(self) -> None:
+        state = self.world.state
+        result = self.round.finish_hole(state.score, state.picked_up)
+        self.world.close()
+        self.world = None
+        from game.views.between import BetweenView
+        from game.views.results import ResultsView
+
+        if self.round.over:
+            self.window.show_view(ResultsView(self.game, self.round))
+        else:
+            self.window.show_view(BetweenView(self.game, self.round, result))
+
+    def on_draw(self) -> None:
+        self.clear()
+        world = self.world
+        if world is None:
+            return
+        with self.camera.activate():
+            self.hole_art.draw()
+            if not (world.state.holed and self.finished_for > 0.3):
+                self.ball_art.draw(world.ball.x, world.ball.y, world.ball.angle)
+            if self.aiming:
+                draw_arrow(self.grab, self.tip, self.game.theme)
+        self.window.default_camera.use()
+        w, h = self.window.width, self.window.height
+        arcade.draw_lrbt_rectangle_filled(0, w, h - HUD_HEIGHT, h, self.game.theme.rgba("panel"))
+        for text in self.hud_texts.values():
+            text.draw()
+        if self.banner_time > 0:
+            self.banner.draw()
+        if world.state.finished:
+            self.draw_finish_message(w, h)
+
+    def draw_finish_message(self, w: int, h: int) -> None:
+        if self.finish_text is None:
+            words = "Picked up" if self.world.state.picked_up else "In the cup!"
+            self.finish_text = arcade.Text(words, w / 2, (h - HUD_HEIGHT) / 2, self.game.theme.rgba("text"), 36,
+                                           anchor_x="center", anchor_y="center", bold=True)
+        self.finish_text.draw()

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 import esper
 
 from engine import polygon
-from engine.components import Ball, Body, Collider, Cup, Drag, HoleState, Material, Name, ShotInput
+from engine.components import Ball, Collider, Cup, Drag, HoleState, Material, Name, ShotInput
 from engine.context import PhysicsContext
 from engine.course import OPPOSITE, SIDES, STEP, Gate, Hole
 from engine.grid import SpatialGrid
@@ -219,7 +219,8 @@ def hole_effects(hole: Hole) -> dict[str, str]:
     walls = [Material()] + [m for _, m in layout_hole(hole).obstacles]
     best_e = max(lib.ball.restitution * m.restitution for m in walls)
     if best_e > 0:
-        reasons["restitution"] = f"ball restitution {lib.ball.restitution:g} x walls up to {best_e / lib.ball.restitution:g}"
+        reasons["restitution"] = (f"ball restitution {lib.ball.restitution:g} x walls up to "
+                                  f"{best_e / lib.ball.restitution:g}")
     best_f = max(lib.ball.friction * m.friction for m in walls)
     if best_f > 0:
         reasons["friction"] = f"ball friction {lib.ball.friction:g} x walls up to {best_f / lib.ball.friction:g}"

@@ -2,23 +2,22 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
+from collections.abc import Iterable
 from pathlib import Path
 
 from engine.course import CONTENT_DIR, load_courses, load_hole, load_library
 from engine.scene import load_scene
+from engine.theme import load_theme
 from engine.yamlsource import ContentError, load_yaml
-
-Checker = Callable[[Path], list[ContentError]]
 
 
 def _library_for(path: Path):
     return load_library(path.parent / "tiles.yaml")
 
 
-def check_file(path: Path, extra: dict[str, Checker] | None = None) -> list[ContentError]:
+def check_file(path: Path) -> list[ContentError]:
     """Every problem in one content file (empty if it is fine). The kind of file is told by its folder
-    (holes/, scenes/, themes/) or its name (tiles.yaml, courses.yaml)."""
+    (scenes/, themes/), its name (tiles.yaml, courses.yaml) or its keys."""
     kind = _kind(path)
     try:
         if kind == "library":
@@ -29,8 +28,8 @@ def check_file(path: Path, extra: dict[str, Checker] | None = None) -> list[Cont
             load_hole(path, _library_for(path))
         elif kind == "scene":
             load_scene(path)
-        elif extra and kind in extra:
-            return extra[kind](path)
+        elif kind == "theme":
+            load_theme(path)
         else:
             load_yaml(path)
             return [ContentError(path, 1, "(file)", "not a known kind of content (tiles, courses, hole, scene, theme)")]
@@ -39,13 +38,27 @@ def check_file(path: Path, extra: dict[str, Checker] | None = None) -> list[Cont
     return []
 
 
+_KEYS = {"border_sets": "library", "courses": "courses", "tiles": "hole", "bodies": "scene", "background": "theme"}
+
+
 def _kind(path: Path) -> str:
+    """What a file is: by its name or folder, else by the keys it has."""
     if path.name == "tiles.yaml":
         return "library"
     if path.name == "courses.yaml":
         return "courses"
-    folder = path.parent.name
-    return {"holes": "hole", "scenes": "scene", "themes": "theme"}.get(folder, "unknown")
+    folder = {"scenes": "scene", "themes": "theme"}.get(path.parent.name)
+    if folder:
+        return folder
+    try:
+        data, _ = load_yaml(path)
+    except ContentError:
+        return "hole" if path.parent.name == "holes" else "unknown"  # the loader will report it
+    if isinstance(data, dict):
+        for key, kind in _KEYS.items():
+            if key in data:
+                return kind
+    return "hole" if path.parent.name == "holes" else "unknown"
 
 
 def content_files(paths: Iterable[str | Path]) -> list[Path]:
@@ -55,14 +68,13 @@ def content_files(paths: Iterable[str | Path]) -> list[Path]:
     return out
 
 
-def validate_paths(paths: Iterable[str | Path] = (CONTENT_DIR,), extra: dict[str, Checker] | None = None
-                   ) -> tuple[int, list[ContentError]]:
+def validate_paths(paths: Iterable[str | Path] = (CONTENT_DIR,)) -> tuple[int, list[ContentError]]:
     """(files checked, problems). A hole's problems are reported once, not again through its course."""
     files = content_files(paths)
     problems: list[ContentError] = []
     seen: set[str] = set()
     for path in files:
-        for problem in check_file(path, extra):
+        for problem in check_file(path):
             if str(problem) not in seen:
                 seen.add(str(problem))
                 problems.append(problem)

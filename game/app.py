@@ -46,9 +46,9 @@ def run_play(course: str, hole: int, theme: str | None, shape: str | None, prese
     import arcade
 
     from engine.course import find_course
+    from engine.theme import find_theme
     from game.session import Game
     from game.shapes import parse_shape
-    from game.theme import find_theme
     from game.views.play import PlayView
 
     game = Game.load()
@@ -73,9 +73,9 @@ def render_hole(course: str, hole: int, theme: str | None, shape: str | None, ou
     import arcade
 
     from engine.course import find_course
+    from engine.theme import find_theme
     from game.session import Game
     from game.shapes import parse_shape
-    from game.theme import find_theme
     from game.views.play import PlayView
 
     game = Game.load()

@@ -41,13 +41,8 @@ def _simulate(args: argparse.Namespace) -> int:
 
 def _validate(args: argparse.Namespace) -> int:
     from engine.validate import validate_paths
-    from game.theme import load_theme
 
-    def check_theme(path):
-        load_theme(path)
-        return []
-
-    count, problems = validate_paths(args.paths or [CONTENT_DIR], extra={"theme": check_theme})
+    count, problems = validate_paths(args.paths or [CONTENT_DIR])
     for problem in problems:
         print(problem, file=sys.stderr)
     print(f"{count} files checked, {len(problems)} problem{'s' if len(problems) != 1 else ''}")

@@ -12,7 +12,6 @@ import arcade
 from arcade.shape_list import (
     ShapeElementList,
     create_ellipse_filled,
-    create_ellipse_outline,
     create_line_loop,
     create_polygon,
     create_rectangle_filled,
@@ -21,7 +20,7 @@ from arcade.shape_list import (
 from engine import polygon
 from engine.hole import HoleLayout
 from engine.settings import MAX_SHOT_SPEED, SHOT_POWER
-from game.theme import Theme
+from engine.theme import Theme
 
 HUD_HEIGHT = 44  # pixels
 MARGIN = 1.0  # metres of background around the hole
@@ -40,7 +39,7 @@ class HoleArt:
     def __init__(self, layout: HoleLayout, theme: Theme) -> None:
         shapes: ShapeElementList = ShapeElementList()
         size = layout.tile_size
-        for k, (x0, y0, x1, y1) in enumerate(layout.floor):
+        for x0, y0, x1, y1 in layout.floor:
             colour = theme.rgba("green_alt" if (round(x0 / size) + round(y0 / size)) % 2 else "green")
             shapes.append(create_rectangle_filled((x0 + x1) / 2, (y0 + y1) / 2, x1 - x0 + 0.02, y1 - y0 + 0.02, colour))
         tx, ty = layout.tee
@@ -48,7 +47,8 @@ class HoleArt:
         shapes.append(create_rectangle_filled(tx, ty, 0.8, 0.8, theme.rgba("green")))
         cx, cy = layout.cup
         cup_r = layout.cup_radius
-        shapes.append(create_ellipse_filled(cx, cy, 2 * cup_r + 0.12, 2 * cup_r + 0.12, theme.rgba("cup_rim"), num_segments=48))
+        rim = 2 * cup_r + 0.12
+        shapes.append(create_ellipse_filled(cx, cy, rim, rim, theme.rgba("cup_rim"), num_segments=48))
         shapes.append(create_ellipse_filled(cx, cy, 2 * cup_r, 2 * cup_r, theme.rgba("cup"), num_segments=48))
         for outline in layout.borders:
             _filled(shapes, outline, theme.rgba("wall"), theme.rgba("wall_edge"), 0.06)
@@ -68,10 +68,10 @@ class BallArt:
         local = [(x * scale, y * scale) for x, y in outline]
         self.shapes: ShapeElementList = ShapeElementList()
         _filled(self.shapes, local, theme.rgba("ball"), theme.rgba("ball_edge"), 0.05 * max(scale, 1.0))
-        # A notch on the first vertex, so spin can be seen on round-ish shapes.
+        # A dot near the first vertex, so spin shows even on round-ish shapes.
         x, y = local[0]
-        self.shapes.append(create_ellipse_outline(0.7 * x, 0.7 * y, 0.12 * scale, 0.12 * scale,
-                                                  theme.rgba("ball_edge"), 0.04 * scale))
+        dot = 0.14 * polygon.bounding_radius(local)
+        self.shapes.append(create_ellipse_filled(0.62 * x, 0.62 * y, dot, dot, theme.rgba("ball_edge")))
 
     def draw(self, x: float, y: float, angle: float) -> None:
         self.shapes.position = (x, y)

@@ -18,7 +18,7 @@ class LaunchProcessor(esper.Processor):
 
     def process(self) -> None:
         self.clock += self.ctx.dt
-        if self.clock < self.every:
+        if self.clock < self.every - 1e-9:  # substeps add up to `every` only to rounding
             return
         self.clock = 0.0
         for _, (body, _) in esper.get_components(Body, Ball):

@@ -17,7 +17,8 @@ class PauseView(UIView):
         theme = game.theme
         self.title = title("Paused", theme, 40)
         column = UIBoxLayout(vertical=True, space_between=10)
-        for text, action in (("Resume", self.on_resume), ("Restart hole", self.on_restart), ("Main menu", self.on_menu)):
+        actions = (("Resume", self.on_resume), ("Restart hole", self.on_restart), ("Main menu", self.on_menu))
+        for text, action in actions:
             button = themed_button(theme, text, width=280)
             button.on_click = action  # type: ignore[method-assign]
             column.add(button)

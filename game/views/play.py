@@ -89,7 +89,8 @@ class PlayView(arcade.View):
             return
         spec, state = self.world.hole.spec, self.world.state
         self.hud_texts["course"].text = self.round.course.name
-        self.hud_texts["hole"].text = f"Hole {self.round.number} of {self.round.hole_count}: {spec.name}  ·  Par {spec.par}"
+        self.hud_texts["hole"].text = (f"Hole {self.round.number} of {self.round.hole_count}: {spec.name}"
+                                       f"  ·  Par {spec.par}")
         extra = f" (+{state.penalties} penalty)" if state.penalties else ""
         self.hud_texts["strokes"].text = f"Strokes {state.score}{extra}"
 

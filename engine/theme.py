@@ -1,4 +1,4 @@
-"""Colour palettes (content/themes/*.yaml)."""
+"""Colour palettes (content/themes/*.yaml): plain data; the front end turns them into colours."""
 
 from __future__ import annotations
 

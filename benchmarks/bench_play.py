@@ -1,0 +1,79 @@
+"""Frames per second of the play view at 1280x720 on this machine's renderer, and physics time per
+frame on every hole (a benchmark script, not a test). Needs a display: run it under xvfb-run.
+
+    xvfb-run -a -s "-screen 0 1280x720x24" python benchmarks/bench_play.py [--frames 240] [--course meadow]
+
+The scripted golfer plays each hole so the ball is moving most of the time. A frame is on_update
+(physics, HUD) + on_draw + the buffer swap; FPS is 1 / median frame time, so it is what the game
+could reach without vsync. The physics figure is the median of HoleWorld.step alone.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import time
+
+import arcade
+
+from engine.course import find_course
+from game.autoplay import golfer_for
+from game.session import Game
+from game.views.play import PlayView
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--frames", type=int, default=240, help="frames measured per hole")
+    parser.add_argument("--course", default="meadow")
+    parser.add_argument("--preset", default="balanced")
+    args = parser.parse_args()
+
+    window = arcade.Window(1280, 720, "PolyGolf benchmark", vsync=False)
+    game = Game.load()
+    game.course_index = game.courses.index(find_course(game.courses, args.course))
+    game.preset = args.preset
+    print(f"{game.course.name}, preset {args.preset}, {args.frames} frames a hole, 1280x720, "
+          f"renderer: {window.ctx.info.RENDERER}")
+    print(f"{'hole':<18}{'frame ms':>10}{'fps':>8}{'draw ms':>9}{'physics us':>12}{'p95 physics us':>16}")
+    all_frames, all_physics = [], []
+    for number in range(1, len(game.course.holes) + 1):
+        view = PlayView(game, game.start_round(number - 1))
+        window.show_view(view)
+        world = view.world
+        golfer = golfer_for(world)
+        frames, draws, physics = [], [], []
+        for _ in range(args.frames + 10):
+            if world.state.finished:
+                view.restart_hole()
+                world = view.world
+                golfer = golfer_for(world)
+            if world.ball_at_rest:
+                world.shoot(*golfer.plan((world.ball.x, world.ball.y)))
+            t0 = time.perf_counter()
+            world.step()  # what on_update does, timed on its own
+            t1 = time.perf_counter()
+            view.update_hud()
+            view.on_draw()
+            window.flip()
+            window.dispatch_events()
+            t2 = time.perf_counter()
+            frames.append(t2 - t0)
+            draws.append(t2 - t1)
+            physics.append(t1 - t0)
+        frames, draws, physics = frames[10:], draws[10:], physics[10:]
+        all_frames += frames
+        all_physics += physics
+        frame_ms = statistics.median(frames) * 1e3
+        print(f"{world.hole.spec.name:<18}{frame_ms:>10.2f}{1000 / frame_ms:>8.0f}"
+              f"{statistics.median(draws) * 1e3:>9.2f}{statistics.median(physics) * 1e6:>12.0f}"
+              f"{statistics.quantiles(physics, n=20)[-1] * 1e6:>16.0f}", flush=True)
+        world.close()
+    frame_ms = statistics.median(all_frames) * 1e3
+    print(f"{'all holes':<18}{frame_ms:>10.2f}{1000 / frame_ms:>8.0f}{'':>9}"
+          f"{statistics.median(all_physics) * 1e6:>12.0f}{statistics.quantiles(all_physics, n=20)[-1] * 1e6:>16.0f}")
+    window.close()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,58 @@
+"""The window commands from a shell: no traceback without a display, `render` without a window,
+`validate` over all content."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+import numpy as np
+from PIL import Image
+
+from game.cli import main
+
+
+def run(*args, env_changes=None, drop=("DISPLAY", "WAYLAND_DISPLAY", "ARCADE_HEADLESS")):
+    env = {k: v for k, v in os.environ.items() if k not in drop}
+    env.update(env_changes or {})
+    return subprocess.run([sys.executable, "-m", "game.cli", *args], capture_output=True, text=True, env=env,
+                          timeout=120)
+
+
+def test_window_commands_without_a_display_say_so_in_one_line():
+    for args in ([], ["play", "--course", "meadow", "--hole", "2"]):
+        result = run(*args)
+        assert result.returncode == 1
+        lines = result.stderr.strip().splitlines()
+        assert len(lines) == 1 and "no display" in lines[0] and "Traceback" not in result.stderr
+
+
+def test_render_draws_a_hole_to_png_without_a_window(tmp_path):
+    out = tmp_path / "dog-leg.png"
+    result = run("render", "meadow", "2", "--theme", "sand", "--shape", "star-5-2", "--out", str(out))
+    assert result.returncode == 0, result.stderr
+    image = np.asarray(Image.open(out).convert("RGB"), dtype=np.int16)
+    assert image.shape == (720, 1280, 3)
+    assert len(np.unique(image.reshape(-1, 3), axis=0)) > 20
+    # The sand palette's green (#e6c98f) covers much of the picture.
+    assert (np.abs(image - (0xE6, 0xC9, 0x8F)).sum(axis=2) < 12).mean() > 0.1
+
+
+def test_render_of_an_unknown_course_or_shape_is_one_line(tmp_path):
+    for args in (["render", "nowhere", "1"], ["render", "meadow", "1", "--shape", "blob"],
+                 ["render", "meadow", "12"]):
+        result = run(*args, "--out", str(tmp_path / "x.png"))
+        assert result.returncode == 2 and len(result.stderr.strip().splitlines()) == 1, result.stderr
+
+
+def test_validate_passes_on_shipped_content_and_fails_on_broken(tmp_path, capsys):
+    assert main(["validate"]) == 0
+    assert "0 problems" in capsys.readouterr().out
+    bad = tmp_path / "themes"
+    bad.mkdir()
+    (bad / "ugly.yaml").write_text("name: Ugly\nbackground: green\n")
+    assert main(["validate", str(bad)]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f"{bad / 'ugly.yaml'}:2: background: String should match pattern "
+                   "'^#([0-9a-fA-F]{6}|[0-9a-fA-F]{8})$'"]

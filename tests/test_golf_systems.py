@@ -1,0 +1,132 @@
+"""The golf systems alone: shot input, cup capture, scoring, launcher."""
+
+from __future__ import annotations
+
+import math
+
+import esper
+import pytest
+
+from engine import polygon
+from engine.components import Ball, Body, Cup, HoleState, Material, ShotInput
+from engine.context import PhysicsContext
+from engine.grid import SpatialGrid
+from engine.pipeline import make_body, make_collider
+from engine.presets import preset
+from engine.settings import MAX_SHOT_SPEED, MAX_SHOT_SPIN, SHOT_POWER, SPIN_RATIO
+from engine.shot import shot_velocity
+from engine.systems.cup import CupProcessor
+from engine.systems.launch import LaunchProcessor
+from engine.systems.scoring import ScoringProcessor
+from engine.systems.shot import ShotProcessor
+
+SQUARE = polygon.normalise(polygon.regular_polygon(4, 0.45))[0]
+
+
+def ctx() -> PhysicsContext:
+    return PhysicsContext(knobs=preset("balanced"), effects=frozenset(), static_grid=SpatialGrid(2.0))
+
+
+def ball_entity(asleep=True, **state):
+    body = make_body(SQUARE, (0.0, 0.0), 1.0)
+    body.asleep = asleep
+    for key, value in state.items():
+        setattr(body, key, value)
+    shot = ShotInput()
+    ent = esper.create_entity(body, make_collider(SQUARE, Material()), shot, Ball(0.0, 0.0))
+    return ent, body, shot
+
+
+def test_shot_through_the_centre_is_straight_and_follows_the_arrow(world):
+    esper.add_processor(ShotProcessor(ctx()))
+    _, body, shot = ball_entity()
+    shot.request((0.0, 0.0), (1.0, 0.5))
+    esper.process()
+    assert (body.vx, body.vy) == pytest.approx((SHOT_POWER * 1.0, SHOT_POWER * 0.5))
+    assert body.spin == 0.0 and not body.asleep and shot.accepted == 1
+
+
+def test_shot_is_refused_while_the_ball_moves(world):
+    esper.add_processor(ShotProcessor(ctx()))
+    _, body, shot = ball_entity(asleep=False, vx=2.0)
+    shot.request((0.0, 0.0), (1.0, 0.0))
+    esper.process()
+    assert body.vx == 2.0 and shot.rejected == 1 and shot.accepted == 0
+
+
+def test_linear_and_angular_parts_are_capped_apart():
+    props_mass, props_inertia = 0.405, 0.405 * 0.405 / 6  # a 0.636 m square: m, m·s²/6
+    # A huge arrow: capped at the maximum speed.
+    vx, vy, _ = shot_velocity(props_mass, props_inertia, 0.45, 0.0, 0.0, 100.0, 0.0)
+    assert math.hypot(vx, vy) == pytest.approx(MAX_SHOT_SPEED)
+    # A soft shot grabbed at the rim: the spin it would get (r×J/I) is cut to SPIN_RATIO·v/R.
+    vx, vy, spin = shot_velocity(props_mass, props_inertia, 0.45, 0.0, 0.3, 0.2, 0.0)
+    uncapped = (0.0 * 0.0 - 0.3 * props_mass * vx) / props_inertia
+    assert abs(uncapped) > SPIN_RATIO * vx / 0.45
+    assert spin == pytest.approx(-SPIN_RATIO * vx / 0.45)
+    # A full shot grabbed at the rim: cut to the absolute cap.
+    _, _, spin = shot_velocity(props_mass, props_inertia, 0.45, 0.0, 0.3, 5.0, 0.0)
+    assert spin == pytest.approx(-MAX_SHOT_SPIN)
+
+
+@pytest.mark.parametrize(("distance", "speed", "drops"), [
+    (0.0, 3.9, True), (0.0, 4.1, False),  # over the centre: up to 4 m/s
+    (0.275, 1.9, True), (0.275, 2.1, False),  # half way to the rim: up to 2 m/s
+    (0.54, 0.01, True), (0.56, 0.0, False),  # at the rim: nothing drops, outside: never
+])
+def test_cup_cap_falls_linearly_from_centre_to_rim(world, distance, speed, drops):
+    esper.add_processor(CupProcessor(ctx()))
+    esper.create_entity(Cup(0.0, 0.0, 0.55, 4.0))
+    body = Body.dynamic(distance, 0.0, 1.0, 1.0, vx=0.0, vy=speed)
+    esper.create_entity(body, Ball(0.0, 0.0))
+    holed = []
+
+    def on_holed(entity):  # esper keeps handlers by weak reference: hold this one
+        holed.append(entity)
+
+    esper.set_handler("holed", on_holed)
+    esper.process()
+    assert bool(holed) is drops
+    if drops:
+        assert body.asleep and (body.x, body.y) == (0.0, 0.0)
+
+
+def test_scoring_counts_strokes_and_holes(world):
+    esper.add_processor(ScoringProcessor(ctx()))
+    state = HoleState(par=3, max_strokes=10)
+    esper.create_entity(state)
+    for _ in range(2):
+        esper.dispatch_event("shot", 1)
+    esper.dispatch_event("penalty", 1)
+    esper.dispatch_event("holed", 1)
+    esper.dispatch_event("shot", 1)  # after the hole is over: not counted
+    assert (state.strokes, state.penalties, state.score, state.holed) == (2, 1, 3, True)
+
+
+def test_scoring_picks_the_ball_up_after_the_last_stroke(world):
+    esper.add_processor(ScoringProcessor(ctx()))
+    state = HoleState(par=3, max_strokes=2)
+    esper.create_entity(state)
+    body = Body.dynamic(0.0, 0.0, 1.0, 1.0, vx=1.0)
+    esper.create_entity(body, Ball(0.0, 0.0))
+    esper.dispatch_event("shot", 1)
+    esper.dispatch_event("shot", 1)
+    esper.process()
+    assert not state.picked_up  # still rolling: it might drop
+    body.asleep = True
+    esper.process()
+    assert state.picked_up and state.finished and state.score == 2
+
+
+def test_launcher_sends_the_ball_from_the_tee_again_and_again(world):
+    context = ctx()
+    esper.add_processor(LaunchProcessor(context, (7.0, 2.5), 1.0, (3.0, 3.0)))
+    _, body, _ = ball_entity(asleep=True)
+    esper.process()
+    assert (body.x, body.y, body.vx, body.vy, body.asleep) == (3.0, 3.0, 7.0, 2.5, False)
+    body.x, body.vx = 9.0, 0.0
+    for _ in range(round(1.0 / context.dt) - 1):
+        esper.process()
+    assert body.x == 9.0
+    esper.process()
+    assert (body.x, body.vx) == (3.0, 7.0)

@@ -14,9 +14,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Annotated, Literal
 
-from pydantic import Field, Strict
+from pydantic import Field, Strict, model_validator
 
-from engine.scene import Count, DragSpec, NonNegative, Point, Positive, Strict_, WallSpec
+from engine.scene import Count, DragSpec, NonNegative, Number, Point, Positive, Strict_, WallSpec
 from engine.yamlsource import ContentError, Loc, format_loc, line_of, load_yaml, validate
 
 CONTENT_DIR = Path(os.environ.get("POLYGOLF_CONTENT", Path(__file__).resolve().parent.parent / "content"))
@@ -42,6 +42,35 @@ class BorderSet(Strict_):
     w: Side = "wall"
 
 
+HAZARDS = ("sand", "water", "ice", "slope", "bumper", "windmill")
+Hazard = Literal["wall", "sand", "water", "ice", "slope", "bumper", "windmill"]
+# Effects a hole can list: the physics core's, the hazards', and the collision test's launcher.
+HOLE_EFFECTS = ("drag", "spin", "friction", "restitution", "ccd", *HAZARDS, "launch")
+HoleEffect = Literal["drag", "spin", "friction", "restitution", "ccd", "sand", "water", "ice", "slope", "bumper",
+                     "windmill", "launch"]
+
+
+class PatternItem(WallSpec):
+    """One thing in a pattern: a wall (the default), an area of the green (sand, water, ice, slope)
+    or a special obstacle (bumper, windmill), shaped by `box` or `polygon` in tile coordinates."""
+
+    hazard: Hazard = "wall"
+    push: Point | None = None  # slope: m/s², in tile coordinates (turns with the tile)
+    kick: Positive | None = None  # bumper: m/s added to each rebound
+    speed: Number | None = None  # windmill: rad/s, counter-clockwise; it turns about its centroid
+
+    @model_validator(mode="after")
+    def _parameters(self) -> PatternItem:
+        needs = {"slope": "push", "bumper": "kick", "windmill": "speed"}
+        for hazard, key in needs.items():
+            given = getattr(self, key) is not None
+            if self.hazard == hazard and not given:
+                raise ValueError(f"a {hazard} needs '{key}'")
+            if self.hazard != hazard and given:
+                raise ValueError(f"'{key}' is only for a {hazard}")
+        return self
+
+
 class BallSpec(Strict_):
     radius: Positive = 0.35
     density: Positive = 1.0
@@ -62,7 +91,7 @@ class TileLibrary(Strict_):
     green: DragSpec = DragSpec(linear=0.4, angular=1.0, rolling=1.2, rolling_angular=2.0)
     cup: CupSpec = CupSpec()
     border_sets: dict[str, BorderSet]
-    patterns: dict[str, list[WallSpec]]
+    patterns: dict[str, list[PatternItem]]
 
 
 class TilePlacement(Strict_):
@@ -86,6 +115,7 @@ class HoleSpec(Strict_):
     tiles: Annotated[list[TilePlacement], Field(min_length=1)]
     green: DragSpec | None = None  # overrides the library's
     launch: Launch | None = None
+    effects: list[HoleEffect] | None = None  # omitted: what the hole's content needs
 
 
 class CourseSpec(Strict_):
@@ -180,14 +210,24 @@ def _reachable(spec: HoleSpec, library: TileLibrary) -> bool:
 
 
 def _check_tee_and_cup(hole: Hole, fail) -> None:
+    import math
+
     from engine.hole import layout_hole, point_clearance
+    from engine.polygon import bounding_radius
 
     layout = layout_hole(hole)
     ball_r = hole.library.ball.radius
+    water = layout.zone_outlines("water")
     for (x, y), what, i in ((layout.tee, "tee", 0), (layout.cup, "cup", len(hole.spec.tiles) - 1)):
         need = ball_r if what == "tee" else hole.library.cup.radius
+        loc = ("tiles", i, "pattern")
         if point_clearance(layout, x, y) < need:
-            raise fail(("tiles", i, "pattern"), f"the {what} at the tile's centre is blocked by an obstacle")
+            raise fail(loc, f"the {what} at the tile's centre is blocked by an obstacle")
+        if water and point_clearance(layout, x, y, water) < need:
+            raise fail(loc, f"the {what} at the tile's centre is in or at the edge of water")
+        for outline, (px, py), _ in layout.windmills:
+            if math.hypot(x - px, y - py) < bounding_radius(outline) + need:
+                raise fail(loc, f"the {what} at the tile's centre is within a windmill's sweep")
 
 
 @dataclass(slots=True)

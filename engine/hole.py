@@ -10,7 +10,24 @@ from dataclasses import dataclass, field
 import esper
 
 from engine import polygon
-from engine.components import Ball, Collider, Cup, Drag, HoleState, Material, Name, ShotInput
+from engine.components import (
+    Ball,
+    Body,
+    Bumper,
+    Collider,
+    Cup,
+    Drag,
+    HoleState,
+    Ice,
+    Material,
+    Name,
+    Region,
+    Sand,
+    ShotInput,
+    Slope,
+    Water,
+    Windmill,
+)
 from engine.context import PhysicsContext
 from engine.course import OPPOSITE, SIDES, STEP, Gate, Hole
 from engine.grid import SpatialGrid
@@ -33,11 +50,15 @@ class HoleLayout:
     tile_size: float
     floor: list[Rect]  # one square per tile
     borders: list[polygon.Outline]  # merged wall boxes along tile sides
-    obstacles: list[tuple[polygon.Outline, Material]]  # pattern polygons
+    obstacles: list[tuple[polygon.Outline, Material]]  # pattern walls
     tee: tuple[float, float]
     cup: tuple[float, float]
     cup_radius: float
     route: list[tuple[float, float]] = field(default_factory=list)  # tee, openings and tile centres, cup
+    bumpers: list[tuple[polygon.Outline, Material, float]] = field(default_factory=list)  # outline, material, kick
+    zones: list[tuple[str, polygon.Outline, tuple[float, float]]] = field(default_factory=list)  # kind, outline, push
+    windmills: list[tuple[polygon.Outline, tuple[float, float], float]] = field(default_factory=list)
+    # windmills: outline about the pivot, pivot, speed (rad/s)
 
     @property
     def bounds(self) -> Rect:
@@ -46,7 +67,11 @@ class HoleLayout:
         return min(xs), min(ys), max(xs), max(ys)
 
     def wall_outlines(self) -> list[polygon.Outline]:
-        return self.borders + [outline for outline, _ in self.obstacles]
+        """Everything solid that does not move."""
+        return self.borders + [o for o, _ in self.obstacles] + [o for o, _, _ in self.bumpers]
+
+    def zone_outlines(self, kind: str) -> list[polygon.Outline]:
+        return [outline for k, outline, _ in self.zones if k == kind]
 
 
 def _segments(side, length: float) -> list[tuple[float, float]]:
@@ -107,20 +132,32 @@ def layout_hole(hole: Hole) -> HoleLayout:
                 box = ((a, at - half), (b, at - half), (b, at + half), (a, at + half))
             borders.append(box)
 
-    obstacles = []
+    obstacles, bumpers, zones, windmills = [], [], [], []
     for tile in spec.tiles:
         cx, cy = (tile.at[0] + 0.5) * size, (tile.at[1] + 0.5) * size
         turn = math.radians(tile.rotate)
         c, s = math.cos(turn), math.sin(turn)
-        for wall in lib.patterns[tile.pattern]:
-            outline = tuple((cx + c * x - s * y, cy + s * x + c * y) for x, y in wall.outline())
-            obstacles.append((outline, Material(wall.restitution, wall.friction)))
+        for item in lib.patterns[tile.pattern]:
+            outline = tuple((cx + c * x - s * y, cy + s * x + c * y) for x, y in item.outline())
+            material = Material(item.restitution, item.friction)
+            if item.hazard == "wall":
+                obstacles.append((outline, material))
+            elif item.hazard == "bumper":
+                bumpers.append((outline, material, item.kick))
+            elif item.hazard == "windmill":
+                local, pivot = polygon.normalise(outline)
+                windmills.append((local, pivot, item.speed))
+            else:
+                push = (0.0, 0.0)
+                if item.push is not None:
+                    push = (c * item.push[0] - s * item.push[1], s * item.push[0] + c * item.push[1])
+                zones.append((item.hazard, outline, push))
 
     first, last = spec.tiles[0].at, spec.tiles[-1].at
     tee = ((first[0] + 0.5) * size, (first[1] + 0.5) * size)
     cup = ((last[0] + 0.5) * size, (last[1] + 0.5) * size)
     layout = HoleLayout(tile_size=size, floor=floor, borders=borders, obstacles=obstacles, tee=tee, cup=cup,
-                        cup_radius=lib.cup.radius)
+                        cup_radius=lib.cup.radius, bumpers=bumpers, zones=zones, windmills=windmills)
     layout.route = _route(hole, tee, cup)
     return layout
 
@@ -175,10 +212,10 @@ def _route(hole: Hole, tee: tuple[float, float], cup: tuple[float, float]) -> li
     return points
 
 
-def point_clearance(layout: HoleLayout, x: float, y: float) -> float:
+def point_clearance(layout: HoleLayout, x: float, y: float, outlines: list | None = None) -> float:
     """Distance from a point to the nearest wall or obstacle (0 if inside one)."""
     best = math.inf
-    for outline in layout.wall_outlines():
+    for outline in layout.wall_outlines() if outlines is None else outlines:
         if _inside(outline, x, y):
             return 0.0
         n = len(outline)
@@ -207,40 +244,54 @@ def ball_outline(shape, radius: float) -> polygon.Outline:
     return tuple((x * scale, y * scale) for x, y in outline)
 
 
-def hole_effects(hole: Hole) -> dict[str, str]:
-    """Effect -> why the hole needs it (the game's own effects included)."""
+def hole_effects(hole: Hole, layout: HoleLayout | None = None) -> dict[str, str]:
+    """Effect -> why the hole needs it. The game's own (shot, cup, scoring) are always there; the
+    rest are the hole's `effects` list if it has one, else what its content needs."""
     lib, spec = hole.library, hole.spec
+    layout = layout or layout_hole(hole)
     green = spec.green or lib.green
     reasons = {"shot": "the player shoots", "cup": "the ball can drop into the cup",
                "scoring": f"par {spec.par}, picked up after {spec.max_strokes or lib.max_strokes} strokes"}
+    derived: dict[str, str] = {}
     if green.any:
-        reasons["drag"] = (f"the green slows the ball (linear {green.linear:g}/s, rolling {green.rolling:g} m/s²)")
-    reasons["spin"] = "a contact off the centre of mass turns a polygon"
-    walls = [Material()] + [m for _, m in layout_hole(hole).obstacles]
+        derived["drag"] = f"the green slows the ball (linear {green.linear:g}/s, rolling {green.rolling:g} m/s²)"
+    derived["spin"] = "a contact off the centre of mass turns a polygon"
+    walls = [Material()] + [m for _, m in layout.obstacles] + [m for _, m, _ in layout.bumpers]
     best_e = max(lib.ball.restitution * m.restitution for m in walls)
     if best_e > 0:
-        reasons["restitution"] = (f"ball restitution {lib.ball.restitution:g} x walls up to "
+        derived["restitution"] = (f"ball restitution {lib.ball.restitution:g} x walls up to "
                                   f"{best_e / lib.ball.restitution:g}")
     best_f = max(lib.ball.friction * m.friction for m in walls)
     if best_f > 0:
-        reasons["friction"] = f"ball friction {lib.ball.friction:g} x walls up to {best_f / lib.ball.friction:g}"
-    reasons["ccd"] = (f"a shot moves up to {MAX_SHOT_SPEED * FRAME_DT / 4:.2g} m a substep; "
+        derived["friction"] = f"ball friction {lib.ball.friction:g} x walls up to {best_f / lib.ball.friction:g}"
+    derived["ccd"] = (f"a shot moves up to {MAX_SHOT_SPEED * FRAME_DT / 4:.2g} m a substep; "
                       f"walls are {lib.wall_thickness:g} m thick")
+    counts = {kind: sum(1 for k, _, _ in layout.zones if k == kind) for kind in ("sand", "water", "ice", "slope")}
+    words = {"sand": "bunker", "water": "pond", "ice": "ice sheet", "slope": "slope"}
+    for kind, count in counts.items():
+        if count:
+            derived[kind] = f"{count} {words[kind]}{'s' if count > 1 else ''}"
+    if layout.bumpers:
+        derived["bumper"] = f"{len(layout.bumpers)} bumper{'s' if len(layout.bumpers) > 1 else ''}"
+    if layout.windmills:
+        derived["windmill"] = f"{len(layout.windmills)} windmill{'s' if len(layout.windmills) > 1 else ''}"
     if spec.launch is not None:
-        reasons["launch"] = f"collision test: the ball is launched every {spec.launch.every:g} s"
-    return reasons
+        derived["launch"] = f"collision test: the ball is launched every {spec.launch.every:g} s"
+    if spec.effects is not None:
+        derived = {e: "listed by the hole" + (f" ({derived[e]})" if e in derived else "") for e in spec.effects}
+    return {**reasons, **derived}
 
 
 class HoleWorld:
-    """One hole being played: an esper world holding the ball, walls, cup and the hole's state, with
-    only the processors the hole needs. The front end writes `shoot()` and reads the rest."""
+    """One hole being played: an esper world holding the ball, walls, hazards, cup and the hole's
+    state, with only the processors the hole needs. The front end writes `shoot()` and reads the rest."""
 
     def __init__(self, hole: Hole, shape, knobs: Knobs | str = "balanced") -> None:
         lib, spec = hole.library, hole.spec
         knobs = preset(knobs) if isinstance(knobs, str) else knobs
         self.hole = hole
         self.layout = layout = layout_hole(hole)
-        self.reasons = hole_effects(hole)
+        self.reasons = hole_effects(hole, layout)
         rotates = "spin" in self.reasons
 
         world = new_world(f"hole-{hole.id}")
@@ -260,15 +311,32 @@ class HoleWorld:
         esper.create_entity(self.state)
 
         grid = SpatialGrid(lib.tile_size / 2.0)
-        for outline, material in [(b, Material()) for b in layout.borders] + layout.obstacles:
+        self.bumpers: list[Bumper] = []
+        solids = [(b, Material(), None) for b in layout.borders] + [(o, m, None) for o, m in layout.obstacles]
+        solids += layout.bumpers
+        for outline, material, kick in solids:
             wall = make_wall(outline, material)
-            ent = esper.create_entity(wall)
+            parts: list[object] = [wall]
+            if kick is not None:
+                self.bumpers.append(Bumper(kick))
+                parts.append(self.bumpers[-1])
+            ent = esper.create_entity(*parts)
             for k, box in enumerate(wall.piece_aabbs):
                 grid.insert((ent, k), box)
+        marker = {"sand": Sand, "ice": Ice, "water": Water}
+        for kind, outline, push in layout.zones:
+            xs, ys = zip(*outline)
+            region = Region(outline, (min(xs), min(ys), max(xs), max(ys)))
+            esper.create_entity(region, Slope(push) if kind == "slope" else marker[kind]())
+        self.windmills: list[Body] = []
+        for outline, pivot, speed in layout.windmills:
+            body = Body(x=pivot[0], y=pivot[1], spin=speed)  # kinematic: no inverse mass or inertia
+            self.windmills.append(body)
+            esper.create_entity(body, make_collider(outline, Material()), Windmill(speed), Name("windmill"))
 
         ctx = PhysicsContext(knobs=knobs, effects=frozenset(self.reasons), static_grid=grid)
         procs: list[esper.Processor] = [ShotProcessor(ctx)]
-        if spec.launch is not None:
+        if "launch" in self.reasons and spec.launch is not None:
             procs.append(LaunchProcessor(ctx, spec.launch.velocity, spec.launch.every, layout.tee))
         procs += processors_for(ctx, self.reasons, contacts=True, has_walls=True, cell_size=lib.tile_size / 2.0)
         procs += [CupProcessor(ctx), ScoringProcessor(ctx)]
@@ -288,6 +356,7 @@ class HoleWorld:
 
     def set_knobs(self, knobs: Knobs) -> None:
         self.sim.ctx.knobs = knobs
+        self.sim.preset_name = knobs_name(knobs)
 
     def close(self) -> None:
         self.sim.close()

@@ -18,14 +18,20 @@ from engine.presets import Knobs, preset
 from engine.scene import Scene
 from engine.simulation import Simulation
 from engine.systems.broadphase import BroadphaseProcessor
+from engine.systems.bumper import BumperProcessor
 from engine.systems.ccd import CCDProcessor
 from engine.systems.drag import DragProcessor
 from engine.systems.gravity import GravityProcessor
+from engine.systems.ice import IceProcessor
 from engine.systems.integrate import IntegrateProcessor
 from engine.systems.narrowphase import NarrowphaseProcessor
 from engine.systems.resolve import ResolveProcessor
 from engine.systems.restitution import RestitutionProcessor
+from engine.systems.sand import SandProcessor
+from engine.systems.slope import SlopeProcessor
 from engine.systems.spin import SpinProcessor
+from engine.systems.water import WaterProcessor
+from engine.systems.windmill import WindmillProcessor
 
 _world_ids = itertools.count(1)
 
@@ -70,24 +76,26 @@ def processors_for(ctx: PhysicsContext, effects: Iterable[str], contacts: bool, 
                    cell_size: float) -> list[esper.Processor]:
     """The substep's processors in order, each present only if an effect or the content needs it."""
     effects = set(effects)
-    # Positions advance first with the velocities the solver left, then forces change velocities,
-    # and the contact solver constrains those before they move anything: symplectic Euler in the
-    # order that keeps a ball pressed into a corner by a slope from sinking in and creeping.
-    procs: list[esper.Processor] = [IntegrateProcessor(ctx)]
-    if "spin" in effects:
-        procs.append(SpinProcessor(ctx))
-    if "gravity" in effects:
-        procs.append(GravityProcessor(ctx))
-    if "drag" in effects:
-        procs.append(DragProcessor(ctx))
+
+    def wanted(*pairs: tuple[str, type]) -> list[esper.Processor]:
+        return [cls(ctx) for effect, cls in pairs if effect in effects]
+
+    # A windmill is driven first; positions then advance with the velocities the solver left; then
+    # forces and surfaces change velocities, and the contact solver constrains those before they move
+    # anything: symplectic Euler in the order that keeps a ball pressed into a corner by a slope
+    # from sinking in and creeping.
+    procs = wanted(("windmill", WindmillProcessor))
+    procs.append(IntegrateProcessor(ctx))
+    procs += wanted(("spin", SpinProcessor), ("gravity", GravityProcessor), ("slope", SlopeProcessor),
+                    ("sand", SandProcessor), ("ice", IceProcessor), ("drag", DragProcessor))
     if contacts:
         if "ccd" in effects and ctx.knobs.ccd and has_walls:
             procs.append(CCDProcessor(ctx))
         procs.append(BroadphaseProcessor(ctx, cell_size))
         procs.append(NarrowphaseProcessor(ctx))
         procs.append(ResolveProcessor(ctx, friction="friction" in effects))
-        if "restitution" in effects:
-            procs.append(RestitutionProcessor(ctx))
+        procs += wanted(("restitution", RestitutionProcessor), ("bumper", BumperProcessor))
+    procs += wanted(("water", WaterProcessor))
     return procs
 
 

@@ -37,6 +37,13 @@ class Theme(Strict_):
     button: Colour
     button_hover: Colour
     button_text: Colour
+    sand_zone: Colour  # bunkers
+    water: Colour
+    ice: Colour
+    slope: Colour  # the arrows drawn on a slope
+    bumper: Colour
+    bumper_lit: Colour  # a bumper just hit
+    windmill: Colour
 
     def rgba(self, field: str) -> RGBA:
         """A colour as an (r, g, b, a) tuple of 0-255 ints."""

@@ -2,8 +2,9 @@
 played by real shots), the benchmarks (a ball that keeps moving) and the play view's hint.
 
 It never reads the physics' future: it aims at the farthest point of the shortest clear path that it
-can see, and picks the arrow length whose roll, under the green's drag law, stops there (or just
-past the cup, so the ball crosses it slowly).
+can see (never a point on a slope, where nothing rests), and picks the arrow length whose roll stops
+there (or just past the cup, so the ball crosses it slowly). The roll is worked out along the line
+with the green's drag law and the surfaces it crosses (sand, ice, slopes); walls it leaves out.
 """
 
 from __future__ import annotations
@@ -11,6 +12,7 @@ from __future__ import annotations
 import heapq
 import math
 
+from engine.components.hazards import Ice, Region, Sand
 from engine.hole import HoleLayout, HoleWorld
 from engine.polygon import Vec
 from engine.scene import DragSpec
@@ -66,7 +68,8 @@ class AutoGolfer:
         self.layout = layout
         self.drag = drag
         self.clearance = 0.9 * ball_radius
-        self.edges = [(o[i], o[(i + 1) % len(o)]) for o in layout.wall_outlines() for i in range(len(o))]
+        self.avoid = layout.wall_outlines() + layout.zone_outlines("water")  # walls, and water it will not cross
+        self.edges = [(o[i], o[(i + 1) % len(o)]) for o in self.avoid for i in range(len(o))]
         size = layout.tile_size
         nodes: list[Vec] = list(layout.route)
         for x0, y0, _, _ in layout.floor:
@@ -75,6 +78,11 @@ class AutoGolfer:
                     nodes.append((x0 + size * i / 5, y0 + size * j / 5))
         self.nodes = [n for n in nodes if self._free(n)] + [layout.cup]
         self.cup = len(self.nodes) - 1
+        self.surfaces = []
+        for kind, outline, push in layout.zones:
+            if kind in ("sand", "ice", "slope"):
+                xs, ys = zip(*outline)
+                self.surfaces.append((Region(tuple(outline), (min(xs), min(ys), max(xs), max(ys))), kind, push))
         self.links: list[list[tuple[int, float]]] = [[] for _ in self.nodes]
         for i, a in enumerate(self.nodes):
             for j in range(i + 1, len(self.nodes)):
@@ -87,7 +95,7 @@ class AutoGolfer:
     def _free(self, p: Vec) -> bool:
         from engine.hole import point_clearance
 
-        return point_clearance(self.layout, *p) >= self.clearance * 1.3
+        return point_clearance(self.layout, *p, self.avoid) >= self.clearance * 1.3
 
     def clear(self, a: Vec, b: Vec) -> bool:
         return all(_segment_distance(a, b, u, v) >= self.clearance for u, v in self.edges)
@@ -118,18 +126,48 @@ class AutoGolfer:
             i = prev[i]
         return out[::-1]
 
+    def on_slope(self, p: Vec) -> bool:
+        return any(kind == "slope" and region.contains(*p) for region, kind, _ in self.surfaces)
+
+    def roll(self, start: Vec, direction: Vec, speed: float, dt: float = 1 / 120) -> float:
+        """How far a ball sent from `start` along `direction` rolls before it stops (or turns back)."""
+        if not self.surfaces:
+            return roll_distance(speed, self.drag)
+        ux, uy = direction
+        k, c = self.drag.linear, self.drag.rolling
+        x, y = start
+        travelled, v = 0.0, speed
+        while v > 0.0 and travelled < 300.0:
+            scale, along = 1.0, 0.0
+            for region, kind, push in self.surfaces:
+                if region.contains(x, y):
+                    if kind == "slope":
+                        along += push[0] * ux + push[1] * uy
+                    else:
+                        scale = Sand().drag_scale if kind == "sand" else Ice().drag_scale
+            v = v * math.exp(-k * scale * dt) - c * scale * dt + along * dt
+            step = max(v, 0.0) * dt
+            x, y, travelled = x + ux * step, y + uy * step, travelled + step
+        return travelled
+
     def plan(self, position: Vec) -> tuple[Vec, Vec]:
         """(grab point, arrow) for a shot from `position`: grabbed at the centroid, so no spin."""
         route = self.path(position)
-        target = next((p for p in reversed(route) if self.clear(position, p)), route[0])
+        target = next((p for p in reversed(route) if self.clear(position, p) and not self.on_slope(p)), route[0])
         distance = math.dist(position, target)
-        if target == self.layout.cup:
-            distance += CUP_OVERSHOOT
         if distance < 1e-6:
             return position, (0.0, 0.0)
-        speed = speed_for(distance, self.drag)
-        ux, uy = (target[0] - position[0]) / math.dist(position, target), (target[1] - position[1]) / math.dist(
-            position, target)
+        ux, uy = (target[0] - position[0]) / distance, (target[1] - position[1]) / distance
+        if target == self.layout.cup:
+            distance += CUP_OVERSHOOT
+        lo, hi = 0.0, MAX_SHOT_SPEED
+        if self.roll(position, (ux, uy), hi) <= distance:
+            speed = hi
+        else:
+            for _ in range(40):
+                mid = 0.5 * (lo + hi)
+                lo, hi = (mid, hi) if self.roll(position, (ux, uy), mid) < distance else (lo, mid)
+            speed = 0.5 * (lo + hi)
         return position, (ux * speed / SHOT_POWER, uy * speed / SHOT_POWER)
 
 

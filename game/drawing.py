@@ -13,6 +13,7 @@ from arcade.shape_list import (
     ShapeElementList,
     create_ellipse_filled,
     create_line_loop,
+    create_line_strip,
     create_polygon,
     create_rectangle_filled,
 )
@@ -45,6 +46,14 @@ class HoleArt:
         tx, ty = layout.tee
         shapes.append(create_rectangle_filled(tx, ty, 0.9, 0.9, theme.rgba("tee")))
         shapes.append(create_rectangle_filled(tx, ty, 0.8, 0.8, theme.rgba("green")))
+        zone_colour = {"sand": "sand_zone", "water": "water", "ice": "ice", "slope": "slope"}
+        for kind, outline, push in sorted(layout.zones, key=lambda z: z[0] == "slope"):
+            colour = theme.rgba(zone_colour[kind])
+            if kind == "slope":
+                _slope_arrows(shapes, outline, push, colour)
+            else:
+                edge = tuple(max(0, c - 40) for c in colour[:3]) + (255,)
+                _filled(shapes, outline, colour, edge, 0.05)
         cx, cy = layout.cup
         cup_r = layout.cup_radius
         rim = 2 * cup_r + 0.12
@@ -54,20 +63,59 @@ class HoleArt:
             _filled(shapes, outline, theme.rgba("wall"), theme.rgba("wall_edge"), 0.06)
         for outline, _ in layout.obstacles:
             _filled(shapes, outline, theme.rgba("obstacle"), theme.rgba("obstacle_edge"), 0.06)
+        for outline, _, _ in layout.bumpers:
+            _filled(shapes, outline, theme.rgba("bumper"), theme.rgba("obstacle_edge"), 0.06)
         self.shapes = shapes
+        self.bumper_outlines = [outline for outline, _, _ in layout.bumpers]
+        self.windmills = [BallArt(outline, theme, fill="windmill", edge="obstacle_edge")
+                          for outline, _, _ in layout.windmills]
         self.cup_radius = cup_r
 
-    def draw(self) -> None:
+    def draw(self, lit_bumpers: Sequence[bool] = (), windmill_poses: Sequence[tuple[float, float, float]] = (),
+             theme: Theme | None = None) -> None:
         self.shapes.draw()
+        for outline, lit in zip(self.bumper_outlines, lit_bumpers):
+            if lit and theme is not None:
+                arcade.draw_polygon_outline(list(outline), theme.rgba("bumper_lit"), 0.14)
+        for art, pose in zip(self.windmills, windmill_poses):
+            art.draw(*pose)
+
+
+def _slope_arrows(shapes: ShapeElementList, outline, push, colour) -> None:
+    """A slope: a tint and a field of chevrons pointing downhill."""
+    from engine.components.hazards import Region
+
+    xs, ys = zip(*outline)
+    region = Region(tuple(outline), (min(xs), min(ys), max(xs), max(ys)))
+    tint = (*colour[:3], 90)
+    for piece in polygon.convex_pieces(tuple(outline)):
+        shapes.append(create_polygon(list(piece), tint))
+    length = math.hypot(*push) or 1.0
+    ux, uy = push[0] / length, push[1] / length
+    size = 0.28
+    step = 1.2
+    x = min(xs) + step / 2
+    while x < max(xs):
+        y = min(ys) + step / 2
+        while y < max(ys):
+            if region.contains(x, y):
+                tip = (x + ux * size, y + uy * size)
+                left = (x - ux * size - uy * size, y - uy * size + ux * size)
+                right = (x - ux * size + uy * size, y - uy * size - ux * size)
+                shapes.append(create_line_strip([left, tip, right], colour, 0.08))
+            y += step
+        x += step
 
 
 class BallArt:
-    """The ball, built once in its own frame and moved and turned each frame."""
+    """A moving polygon (the ball, a windmill), built once in its own frame and moved and turned each
+    frame."""
 
-    def __init__(self, outline: Sequence[polygon.Vec], theme: Theme, scale: float = 1.0) -> None:
+    def __init__(self, outline: Sequence[polygon.Vec], theme: Theme, scale: float = 1.0, fill: str = "ball",
+                 edge: str = "ball_edge") -> None:
         local = [(x * scale, y * scale) for x, y in outline]
         self.shapes: ShapeElementList = ShapeElementList()
-        _filled(self.shapes, local, theme.rgba("ball"), theme.rgba("ball_edge"), 0.05 * max(scale, 1.0))
+        _filled(self.shapes, local, theme.rgba(fill), theme.rgba(edge), 0.05 * max(scale, 1.0))
         # A dot near the first vertex, so spin shows even on round-ish shapes.
         x, y = local[0]
         dot = 0.14 * polygon.bounding_radius(local)

@@ -6,11 +6,22 @@ from engine.components import Body, Drag
 from engine.context import PhysicsContext
 
 
-class DragProcessor(esper.Processor):
-    """Linear and angular drag as exact exponential decay over the substep, v <- v·exp(-k·dt), then
-    rolling resistance as a constant deceleration that never reverses the motion.
+def decay(value: float, rate: float, resistance: float, dt: float) -> float:
+    """Magnitude after dt under d|v|/dt = -rate·|v| - resistance, solved exactly; never below zero.
 
-    The decay is exact for any step size, so a long roll matches v0·exp(-k·t) whatever the preset."""
+    |v|(dt) = (|v| + c/k)·exp(-k·dt) - c/k, or |v| - c·dt when k = 0."""
+    if rate > 0.0:
+        after = (value + resistance / rate) * math.exp(-rate * dt) - resistance / rate
+    else:
+        after = value - resistance * dt
+    return after if after > 0.0 else 0.0
+
+
+class DragProcessor(esper.Processor):
+    """Drag on the green: exponential damping (`linear`, `angular`, 1/s) together with rolling
+    resistance (`rolling`, `rolling_angular`, a constant deceleration), integrated exactly over the
+    substep, so a roll follows the closed form whatever the preset. The surface under the body
+    (sand, ice) scales every rate for this substep through `Drag.scale`."""
 
     name = "drag"
 
@@ -22,17 +33,13 @@ class DragProcessor(esper.Processor):
         for _, (body, drag) in esper.get_components(Body, Drag):
             if body.asleep or body.inv_mass == 0.0:
                 continue
-            if drag.linear:
-                factor = math.exp(-drag.linear * dt)
-                body.vx *= factor
-                body.vy *= factor
-            if drag.angular:
-                body.spin *= math.exp(-drag.angular * dt)
-            if drag.rolling:
+            scale, drag.scale = drag.scale, 1.0
+            if drag.linear or drag.rolling:
                 speed = math.hypot(body.vx, body.vy)
-                factor = max(0.0, speed - drag.rolling * dt) / speed if speed > 0.0 else 0.0
-                body.vx *= factor
-                body.vy *= factor
-            if drag.rolling_angular:
-                slowed = max(0.0, abs(body.spin) - drag.rolling_angular * dt)
-                body.spin = math.copysign(slowed, body.spin)
+                if speed > 0.0:
+                    factor = decay(speed, drag.linear * scale, drag.rolling * scale, dt) / speed
+                    body.vx *= factor
+                    body.vy *= factor
+            if (drag.angular or drag.rolling_angular) and body.spin:
+                turned = decay(abs(body.spin), drag.angular * scale, drag.rolling_angular * scale, dt)
+                body.spin = math.copysign(turned, body.spin)

@@ -171,7 +171,8 @@ class PlayView(arcade.View):
         if world is None:
             return
         with self.camera.activate():
-            self.hole_art.draw()
+            self.hole_art.draw([b.lit > 0 for b in world.bumpers], [(w.x, w.y, w.angle) for w in world.windmills],
+                               self.game.theme)
             if not (world.state.holed and self.finished_for > 0.3):
                 self.ball_art.draw(world.ball.x, world.ball.y, world.ball.angle)
             if self.aiming:

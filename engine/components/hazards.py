@@ -1,0 +1,74 @@
+"""Hazards: areas of the green (sand, ice, slope, water) and special obstacles (bumper, windmill).
+
+An area entity carries a `Region` and one kind marker; a bumper is a `Wall` with a `Bumper`; a
+windmill is a kinematic `Body` + `Collider` with a `Windmill`.
+"""
+
+from dataclasses import dataclass
+
+from engine.polygon import Outline
+
+
+@dataclass(slots=True)
+class Region:
+    """A polygonal area of the green, in world coordinates."""
+
+    outline: Outline
+    aabb: tuple[float, float, float, float]
+
+    def contains(self, x: float, y: float) -> bool:
+        x0, y0, x1, y1 = self.aabb
+        if not (x0 <= x <= x1 and y0 <= y <= y1):
+            return False
+        inside = False
+        pts = self.outline
+        n = len(pts)
+        for i in range(n):
+            (ax, ay), (bx, by) = pts[i], pts[(i + 1) % n]
+            if (ay > y) != (by > y) and x < ax + (y - ay) * (bx - ax) / (by - ay):
+                inside = not inside
+        return inside
+
+
+@dataclass(slots=True)
+class Sand:
+    """Heavy going: the green's drag is multiplied by `drag_scale` while the ball is in it."""
+
+    drag_scale: float = 5.0
+
+
+@dataclass(slots=True)
+class Ice:
+    """Hardly any drag: the green's drag is multiplied by `drag_scale` (well below 1)."""
+
+    drag_scale: float = 0.08
+
+
+@dataclass(slots=True)
+class Slope:
+    """A constant push (m/s²) on the ball while it is on the slope."""
+
+    push: tuple[float, float]
+
+
+@dataclass(slots=True)
+class Water:
+    """A ball whose centre goes in costs `penalty` strokes and goes back where it last rested."""
+
+    penalty: int = 1
+
+
+@dataclass(slots=True)
+class Bumper:
+    """A wall that kicks: every impact leaves `kick` m/s faster along the normal than restitution
+    alone would. `lit` counts down after a hit, for drawing."""
+
+    kick: float
+    lit: float = 0.0
+
+
+@dataclass(slots=True)
+class Windmill:
+    """A kinematic obstacle turning at `speed` rad/s (counter-clockwise) about its centroid."""
+
+    speed: float

@@ -1,0 +1,26 @@
+import esper
+
+from engine.components import Ball, Body, Region, Slope
+from engine.context import PhysicsContext
+
+
+class SlopeProcessor(esper.Processor):
+    """A ball whose centre is on a slope is pushed at the slope's constant acceleration. A ball at
+    rest stays at rest (it can only rest on a slope against something that holds it)."""
+
+    name = "slope"
+
+    def __init__(self, ctx: PhysicsContext) -> None:
+        self.ctx = ctx
+
+    def process(self) -> None:
+        dt = self.ctx.dt
+        zones = esper.get_components(Region, Slope)
+        for _, (body, _) in esper.get_components(Body, Ball):
+            if body.asleep:
+                continue
+            for _, (region, slope) in zones:
+                if region.contains(body.x, body.y):
+                    body.vx += slope.push[0] * dt
+                    body.vy += slope.push[1] * dt
+                    break

@@ -158,7 +158,7 @@ def test_polygon_buttons_change_the_ball(window, game):
     click(window, "random")
     assert game.shape_label.startswith("Random #")
     click(window, "course")
-    assert game.course.name == "Sandbox"
+    assert game.course.name == "Hazards"
 
 
 def test_a_full_round_of_nine_holes_ends_on_the_scorecard_with_the_right_totals(window, game, shots_dir):

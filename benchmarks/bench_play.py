@@ -16,8 +16,8 @@ import time
 
 import arcade
 
+from engine.autoplay import golfer_for
 from engine.course import find_course
-from game.autoplay import golfer_for
 from game.session import Game
 from game.views.play import PlayView
 

@@ -41,6 +41,8 @@ def derive_effects(scene: Scene, substeps: int = 4) -> dict[str, str]:
         reach = (math.hypot(*fastest.velocity) + abs(fastest.spin) * _radius(fastest)) * FRAME_DT / substeps
         if reach > LINEAR_SLOP:
             reasons["ccd"] = f"{fastest.name} moves up to {reach:.3g} m a substep: walls must not be skipped"
+        elif scene.gravity != (0.0, 0.0):
+            reasons["ccd"] = "gravity speeds bodies up: walls must not be skipped"
     return reasons
 
 

@@ -83,6 +83,29 @@ def _render(args: argparse.Namespace) -> int:
     return out
 
 
+def _bench_accuracy(args: argparse.Namespace) -> int:
+    from pathlib import Path
+
+    from engine import accuracy
+
+    cases = accuracy.all_cases(args.quick)
+    if args.quick:
+        settings = accuracy.sweep_settings(substeps=(1, 4, 16), iterations=(1, 8, 20))
+    else:
+        settings = accuracy.sweep_settings()
+    rows = accuracy.measure(settings, repeats=args.repeats, workers=args.workers, quick=args.quick,
+                            progress=not args.no_progress)
+    effects = accuracy.effect_costs()
+    command = "polygolf bench accuracy" + (" --quick" if args.quick else "") + f" --repeats {args.repeats}"
+    paths = accuracy.write_report(rows, cases, Path(args.out), effects, command)
+    for row in sorted((r for r in rows if r.preset), key=lambda r: r.cost_us):
+        print(f"{row.preset:<9} {row.label:<18} error {row.error:.4f}  {row.cost_us / 1000:7.1f} ms per simulated s"
+              f"  {'on' if row.on_front else 'OFF'} the front")
+    print(f"{sum(r.on_front for r in rows)} of {len(rows)} settings on the Pareto front; wrote "
+          + ", ".join(str(p) for p in paths.values()))
+    return 0
+
+
 def _explain(args: argparse.Namespace) -> int:
     from engine.explain import explain
 
@@ -121,6 +144,17 @@ def build_parser() -> argparse.ArgumentParser:
     val = sub.add_parser("validate", help="check content files (default: all of content/)")
     val.add_argument("paths", nargs="*", help="files or folders")
     val.set_defaults(run=_validate)
+
+    bench = sub.add_parser("bench", help="measure what accuracy costs")
+    bench_sub = bench.add_subparsers(dest="bench_command", required=True)
+    acc = bench_sub.add_parser("accuracy", help="sweep the solver's knobs over hard cases and real shots; "
+                                                "write a Markdown and CSV table and a plot")
+    acc.add_argument("--out", default="docs", help="folder for accuracy.md, .csv and .png (default docs)")
+    acc.add_argument("--repeats", type=int, default=3, help="timed runs per setting (median; default 3)")
+    acc.add_argument("--quick", action="store_true", help="a coarse grid and five cases (about a minute)")
+    acc.add_argument("--workers", type=int, default=2, help="processes, one a core (default 2)")
+    acc.add_argument("--no-progress", action="store_true", help="no progress bar")
+    acc.set_defaults(run=_bench_accuracy)
 
     exp = sub.add_parser("explain", help="list a scene's or hole's pipeline and why each system is in it")
     exp.add_argument("path", help="scene or hole YAML file, or COURSE:HOLE (meadow:3)")

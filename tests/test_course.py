@@ -8,12 +8,12 @@ import textwrap
 
 import pytest
 
+from engine.autoplay import play_hole
 from engine.course import HOLES_DIR, load_courses, load_hole, load_library
 from engine.hole import HoleWorld, layout_hole, point_clearance
 from engine.scene import ShapeSpec
 from engine.validate import validate_paths
 from engine.yamlsource import ContentError
-from game.autoplay import play_hole
 
 PENTAGON = ShapeSpec(regular=5, radius=1.0)
 

@@ -184,3 +184,15 @@ def test_far_from_origin_gives_the_flat_face_result(preset):
         assert b.vx == pytest.approx(5.0, rel=0.01)
         assert abs(b.spin) < 1e-6
         assert b.x - 10000.0 == pytest.approx(a.x, abs=0.01)
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_deep_overlap_is_pushed_out_without_gaining_speed(preset):
+    half = 0.5 / math.sqrt(2.0)
+    with scene_sim("deep-overlap", preset) as sim:
+        ball = sim.body("ball")
+        assert half - ball.x == pytest.approx(0.05, abs=1e-4)  # starts 5 cm into the wall
+        sim.run(0.5)
+        assert half - ball.x <= 0.0055  # out to within the linear slop
+        assert (ball.vx, ball.vy, ball.spin) == (0.0, 0.0, 0.0)  # position correction adds no energy
+        assert sim.metrics.max_energy == 0.0

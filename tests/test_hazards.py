@@ -207,7 +207,7 @@ def test_every_hole_holds_exactly_the_systems_it_needs(courses):
 
 
 def test_hazard_course_plays_end_to_end(courses):
-    from game.autoplay import play_hole
+    from engine.autoplay import play_hole
 
     hazards = next(c for c in courses if c.name == "Hazards")
     for hole in hazards.playable:

@@ -121,3 +121,33 @@ def test_installed_command_runs():
     out = subprocess.run([sys.executable, "-m", "game.cli", "simulate", str(SCENES / "long-roll.yaml"),
                           "--seconds", "1", "--json"], capture_output=True, text=True, check=True).stdout
     assert json.loads(out)["systems"] == ["integrate", "spin", "drag"]
+
+
+CONTACT = ["broadphase", "narrowphase", "resolve"]
+SCENE_PIPELINES = {
+    "corner": ["integrate", "spin", "drag", "ccd", *CONTACT, "restitution"],
+    "deep-overlap": ["integrate", "spin", *CONTACT, "restitution"],
+    "far-from-origin": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
+    "fast-spin": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
+    "flat-wall": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
+    "long-roll": ["integrate", "spin", "drag"],
+    "mass-ratio": ["integrate", "spin", *CONTACT, "restitution"],
+    "pile": ["integrate", "spin", "gravity", "ccd", *CONTACT, "restitution"],
+    "resting-contact": ["integrate", "spin", "gravity", "drag", "ccd", *CONTACT, "restitution"],
+    "star-landing": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
+    "thin-wall": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
+    "vertex-hit": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
+}
+FRICTION = {"corner", "deep-overlap", "fast-spin", "pile", "resting-contact"}
+
+
+@pytest.mark.parametrize("name", sorted(SCENE_PIPELINES))
+def test_each_scene_runs_only_the_systems_its_content_needs(name):
+    with build_scene(load_scene(SCENES / f"{name}.yaml")) as sim:
+        assert sim.system_names == SCENE_PIPELINES[name]
+        resolve = [p for p in sim.processors if p.name == "resolve"]
+        assert [p.friction for p in resolve] == ([name in FRICTION] if resolve else [])
+
+
+def test_every_shipped_scene_has_its_pipeline_asserted():
+    assert {p.stem for p in SCENES.glob("*.yaml")} == set(SCENE_PIPELINES)

@@ -11,8 +11,8 @@ import arcade
 import numpy as np
 import pytest
 
+from engine.autoplay import golfer_for
 from engine.course import load_courses
-from game.autoplay import golfer_for
 from game.session import Game, HoleResult
 from game.views.between import BetweenView
 from game.views.guide import GuideView
@@ -237,3 +237,26 @@ def test_the_window_resizes_and_the_hole_still_fits(window, game, shots_dir):
     snapshot(window, shots_dir, "play-800x600")
     window.set_size(1280, 720)
     send(window, "on_resize", 1280, 720)
+
+
+def test_f3_overlay_shows_each_systems_cost_and_keys_switch_the_preset(window, game, shots_dir):
+    play = show(window, PlayView(game, game.start_round()))
+    key(window, arcade.key.F3)
+    assert play.overlay
+    play.world.shoot((play.world.ball.x, play.world.ball.y), (2.0, 0.0))
+    for _ in range(30):
+        frame(window)
+    lines = play.overlay_lines()
+    assert lines[0].startswith("preset balanced: 4 substeps x 8 iterations")
+    for name in play.world.sim.system_names:
+        line = next(line for line in lines if line.strip().startswith(name + " "))
+        assert float(line.split()[-2]) >= 0.0
+    assert play.system_us["narrowphase"] > 0.0 and play.system_us["integrate"] > 0.0
+    key(window, arcade.key.KEY_1)
+    frame(window)
+    assert play.world.sim.ctx.knobs.substeps == 2 and game.preset == "fast"
+    assert play.overlay_lines()[0].startswith("preset fast: 2 substeps")
+    assert_not_blank(snapshot(window, shots_dir, "play-overlay"), "overlay")
+    key(window, arcade.key.KEY_2)
+    key(window, arcade.key.F3)
+    assert not play.overlay and game.preset == "balanced"

@@ -21,6 +21,10 @@ class Body:
     x0: float = 0.0
     y0: float = 0.0
     angle0: float = 0.0
+    # Time continuous collision cut from the last substep's motion (s), made up in the next one;
+    # and how long the last substep's motion lasted (dt, plus any lag made up).
+    lag: float = 0.0
+    moved_for: float = 0.0
     # Pseudo-velocities of split-impulse position correction; never part of the kinetic energy.
     push_x: float = 0.0
     push_y: float = 0.0

@@ -10,8 +10,9 @@ from engine.toi import time_of_impact
 
 class CCDProcessor(esper.Processor):
     """Continuous collision against walls: a body whose motion this substep would carry it into or
-    through a wall is moved back to its time of impact (Box2D v3 style; the rest of the substep's
-    motion is dropped). The discrete contact that follows then bounces it."""
+    through a wall is moved back to its time of impact; the discrete contact that follows bounces it,
+    and the time the motion lost is made up in the next substep (`Body.lag`), so a fast body that
+    bounces ends up where it should rather than a substep behind."""
 
     name = "ccd"
 
@@ -47,4 +48,6 @@ class CCDProcessor(esper.Processor):
                 body.x = body.x0 + first * dx
                 body.y = body.y0 + first * dy
                 body.angle = body.angle0 + first * da
+                # The motion covered (dt + lag) this substep; the part after the impact is owed.
+                body.lag = (1.0 - first) * body.moved_for
                 ctx.toi_hits += 1

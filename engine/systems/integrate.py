@@ -42,5 +42,13 @@ class IntegrateProcessor(esper.Processor):
                 else:
                     body.still_time = 0.0
             body.x0, body.y0, body.angle0 = body.x, body.y, body.angle
-            body.x += body.vx * dt
-            body.y += body.vy * dt
+            step = dt
+            if body.lag:
+                # Continuous collision stopped the body early last substep; it now moves on with its
+                # new velocity for the time it lost, so impacts do not slow the clock.
+                step += body.lag
+                body.angle += body.spin * body.lag
+                body.lag = 0.0
+            body.moved_for = step
+            body.x += body.vx * step
+            body.y += body.vy * step

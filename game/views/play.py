@@ -1,7 +1,8 @@
 """The play screen: the hole in the theme's colours, the HUD, and the shot arrow.
 
 Press on the ball and drag: the arrow shows direction and power, where you grabbed the ball sets the
-spin, release shoots, Esc cancels. R restarts the hole; Esc (not aiming) pauses.
+spin, release shoots, Esc cancels. R restarts the hole; Esc (not aiming) pauses. F3 shows what each
+system costs a frame; 1, 2, 3 switch the preset (fast, balanced, accurate) live.
 """
 
 from __future__ import annotations
@@ -11,12 +12,16 @@ import math
 import arcade
 
 from engine.hole import HoleWorld
+from engine.presets import preset
 from engine.settings import MAX_SHOT_SPEED, SHOT_POWER
 from game.drawing import HUD_HEIGHT, BallArt, HoleArt, draw_arrow, fit_camera
 from game.session import Game, Round
 
 GRAB_SLACK = 1.25  # a press this many ball radii from the centre still grabs the ball
 FINISH_PAUSE = 1.0  # seconds between the ball dropping and the next screen
+PRESET_KEYS = {arcade.key.KEY_1: "fast", arcade.key.KEY_2: "balanced", arcade.key.KEY_3: "accurate"}
+OVERLAY_LINES = 18
+SMOOTHING = 0.1  # weight of the newest frame in the overlay's running averages
 
 
 class PlayView(arcade.View):
@@ -35,6 +40,10 @@ class PlayView(arcade.View):
         self.banner = arcade.Text("", 0, 0, theme.rgba("text"), 13, anchor_x="center", anchor_y="center",
                                   multiline=True, width=900, align="center")
         self.banner_time = 0.0
+        self.overlay = False
+        self.overlay_texts = [arcade.Text("", 0, 0, theme.rgba("text"), 12, font_name=("DejaVu Sans Mono", "monospace"))
+                              for _ in range(OVERLAY_LINES)]
+        self.system_us: dict[str, float] = {}
         self.world: HoleWorld | None = None
         self.start_hole()
 
@@ -137,6 +146,19 @@ class PlayView(arcade.View):
                 self.window.show_view(PauseView(self.game, self))
         elif symbol == arcade.key.R:
             self.restart_hole()
+        elif symbol == arcade.key.F3:
+            self.overlay = not self.overlay
+            self.system_us.clear()
+        elif symbol in PRESET_KEYS:
+            self.set_preset(PRESET_KEYS[symbol])
+
+    def set_preset(self, name: str) -> None:
+        """Switch the accuracy preset live; the next holes keep it."""
+        self.game.preset = name
+        if self.world is not None:
+            self.world.set_knobs(preset(name))
+        self.system_us.clear()
+        self.show_banner(f"Preset: {name}", 2.0)
 
     # -- frame ------------------------------------------------------------------------------------
 
@@ -144,13 +166,49 @@ class PlayView(arcade.View):
         world = self.world
         if world is None:
             return
-        world.step()
+        if self.overlay:
+            self.step_profiled(world)
+        else:
+            world.step()
         self.banner_time = max(0.0, self.banner_time - delta_time)
         self.update_hud()
         if world.state.finished:
             self.finished_for += delta_time
             if self.finished_for >= FINISH_PAUSE:
                 self.finish_hole()
+
+    def step_profiled(self, world: HoleWorld) -> None:
+        """One frame with every system timed; keeps running averages in µs per frame."""
+        before = dict(world.sim.metrics.system_seconds)
+        world.step(profile=True)
+        for name, total in world.sim.metrics.system_seconds.items():
+            spent = (total - before.get(name, 0.0)) * 1e6
+            old = self.system_us.get(name)
+            self.system_us[name] = spent if old is None else old + SMOOTHING * (spent - old)
+
+    def overlay_lines(self) -> list[str]:
+        world = self.world
+        knobs = world.sim.ctx.knobs
+        names = world.sim.system_names
+        total = sum(self.system_us.get(n, 0.0) for n in names)
+        lines = [f"preset {world.sim.preset_name}: {knobs.substeps} substeps x {knobs.iterations} iterations, "
+                 f"{knobs.position_correction}, ccd {'on' if knobs.ccd else 'off'}",
+                 f"physics {total:7.0f} us per frame   contacts {world.sim.ctx.contact_count}",
+                 ""]
+        lines += [f"  {name:<12}{self.system_us.get(name, 0.0):7.0f} us" for name in names]
+        lines += ["", "F3 hide   1 fast   2 balanced   3 accurate"]
+        return lines[:OVERLAY_LINES]
+
+    def draw_overlay(self) -> None:
+        lines = self.overlay_lines()
+        top = self.window.height - HUD_HEIGHT - 12
+        width = 600
+        arcade.draw_lrbt_rectangle_filled(8, 8 + width, top - 18 * len(lines) - 8, top + 4,
+                                          self.game.theme.rgba("panel"))
+        for text, line, i in zip(self.overlay_texts, lines, range(len(lines))):
+            text.text = line
+            text.position = (16, top - 14 - 18 * i)
+            text.draw()
 
     def finish_hole(self) -> None:
         state = self.world.state
@@ -184,6 +242,8 @@ class PlayView(arcade.View):
             text.draw()
         if self.banner_time > 0:
             self.banner.draw()
+        if self.overlay:
+            self.draw_overlay()
         if world.state.finished:
             self.draw_finish_message(w, h)
 

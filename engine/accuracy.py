@@ -287,6 +287,9 @@ class Row:
 
 def sweep_settings(substeps: Iterable[int] = SUBSTEPS, iterations: Iterable[int] = ITERATIONS,
                    corrections: Iterable[str] = CORRECTIONS) -> list[Knobs]:
+    """The grid: every substep count x velocity iteration count x ccd on/off x position correction.
+    Position iterations follow the velocity iterations (i // 2 + 1, at most 4) rather than being a
+    fifth axis; the presets are points of this grid."""
     settings = [Knobs(substeps=s, iterations=i, position_iterations=max(1, min(4, i // 2 + 1)), ccd=ccd,
                       position_correction=c)
                 for s in substeps for i in iterations for ccd in (True, False) for c in corrections]

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import math
 from collections import defaultdict, deque
-from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import esper
@@ -216,7 +215,7 @@ def point_clearance(layout: HoleLayout, x: float, y: float, outlines: list | Non
     """Distance from a point to the nearest wall or obstacle (0 if inside one)."""
     best = math.inf
     for outline in layout.wall_outlines() if outlines is None else outlines:
-        if _inside(outline, x, y):
+        if polygon.contains(outline, x, y):
             return 0.0
         n = len(outline)
         for i in range(n):
@@ -225,16 +224,6 @@ def point_clearance(layout: HoleLayout, x: float, y: float, outlines: list | Non
             t = max(0.0, min(1.0, ((x - ax) * ex + (y - ay) * ey) / (ex * ex + ey * ey)))
             best = min(best, math.hypot(x - ax - t * ex, y - ay - t * ey))
     return best
-
-
-def _inside(outline: Sequence[polygon.Vec], x: float, y: float) -> bool:
-    inside = False
-    n = len(outline)
-    for i in range(n):
-        (ax, ay), (bx, by) = outline[i], outline[(i + 1) % n]
-        if (ay > y) != (by > y) and x < ax + (y - ay) * (bx - ax) / (by - ay):
-            inside = not inside
-    return inside
 
 
 def ball_outline(shape, radius: float) -> polygon.Outline:

@@ -53,6 +53,17 @@ def centroid(vertices: Sequence[Vec]) -> Vec:
     return ox + cx / (3.0 * area2), oy + cy / (3.0 * area2)
 
 
+def contains(vertices: Sequence[Vec], x: float, y: float) -> bool:
+    """Whether (x, y) is inside a simple polygon (even-odd ray crossing)."""
+    inside = False
+    n = len(vertices)
+    for i in range(n):
+        (ax, ay), (bx, by) = vertices[i], vertices[(i + 1) % n]
+        if (ay > y) != (by > y) and x < ax + (y - ay) * (bx - ax) / (by - ay):
+            inside = not inside
+    return inside
+
+
 def bounding_radius(vertices: Sequence[Vec]) -> float:
     return max(math.hypot(x, y) for x, y in vertices)
 

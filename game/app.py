@@ -42,14 +42,12 @@ def run_menu() -> None:
     window.run()
 
 
-def run_play(course: str, hole: int, theme: str | None, shape: str | None, preset: str) -> None:
-    import arcade
-
+def _game_for(course: str, hole: int, theme: str | None, shape: str | None):
+    """The game set up from command-line choices; refuses an unknown course, theme, shape or hole."""
     from engine.course import find_course
     from engine.theme import find_theme
     from game.session import Game
     from game.shapes import parse_shape
-    from game.views.play import PlayView
 
     game = Game.load()
     game.course_index = game.courses.index(find_course(game.courses, course))
@@ -57,10 +55,19 @@ def run_play(course: str, hole: int, theme: str | None, shape: str | None, prese
         game.theme_index = game.themes.index(find_theme(game.themes, theme))
     if shape:
         game.set_shape(*parse_shape(shape))
-    game.preset = preset
-    game.guide_seen = True
     if not 1 <= hole <= len(game.course.holes):
         raise ValueError(f"{game.course.name} has holes 1 to {len(game.course.holes)}")
+    return game
+
+
+def run_play(course: str, hole: int, theme: str | None, shape: str | None, preset: str) -> None:
+    import arcade
+
+    from game.views.play import PlayView
+
+    game = _game_for(course, hole, theme, shape)
+    game.preset = preset
+    game.guide_seen = True
     window = make_window()
     window.show_view(PlayView(game, game.start_round(hole - 1)))
     arcade.run()
@@ -72,20 +79,9 @@ def render_hole(course: str, hole: int, theme: str | None, shape: str | None, ou
     os.environ.setdefault("ARCADE_HEADLESS", "1")
     import arcade
 
-    from engine.course import find_course
-    from engine.theme import find_theme
-    from game.session import Game
-    from game.shapes import parse_shape
     from game.views.play import PlayView
 
-    game = Game.load()
-    game.course_index = game.courses.index(find_course(game.courses, course))
-    if theme:
-        game.theme_index = game.themes.index(find_theme(game.themes, theme))
-    if shape:
-        game.set_shape(*parse_shape(shape))
-    if not 1 <= hole <= len(game.course.holes):
-        raise ValueError(f"{game.course.name} has holes 1 to {len(game.course.holes)}")
+    game = _game_for(course, hole, theme, shape)
     broken = game.course.holes[hole - 1]
     if isinstance(broken, Exception):
         raise broken

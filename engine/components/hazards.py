@@ -6,7 +6,7 @@ windmill is a kinematic `Body` + `Collider` with a `Windmill`.
 
 from dataclasses import dataclass
 
-from engine.polygon import Outline
+from engine.polygon import Outline, contains
 
 
 @dataclass(slots=True)
@@ -18,16 +18,7 @@ class Region:
 
     def contains(self, x: float, y: float) -> bool:
         x0, y0, x1, y1 = self.aabb
-        if not (x0 <= x <= x1 and y0 <= y <= y1):
-            return False
-        inside = False
-        pts = self.outline
-        n = len(pts)
-        for i in range(n):
-            (ax, ay), (bx, by) = pts[i], pts[(i + 1) % n]
-            if (ay > y) != (by > y) and x < ax + (y - ay) * (bx - ax) / (by - ay):
-                inside = not inside
-        return inside
+        return x0 <= x <= x1 and y0 <= y <= y1 and contains(self.outline, x, y)
 
 
 @dataclass(slots=True)

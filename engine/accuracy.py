@@ -23,6 +23,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from engine import polygon
 from engine.presets import PRESETS, Knobs
 
 REFERENCE = Knobs(substeps=32, iterations=30, position_iterations=6, ccd=True, position_correction="ngs")
@@ -58,7 +59,7 @@ class Case:
     exact: Callable[[Outcome], float] | None = None  # closed-form relative error, if there is one
 
 
-def _scene_case(name: str, seconds: float, exact=None, escaped=None, kind=None) -> Case:
+def _scene_case(name: str, seconds: float, exact=None, escaped=None) -> Case:
     from engine.pipeline import build_scene
     from engine.scene import load_scene
 
@@ -67,12 +68,8 @@ def _scene_case(name: str, seconds: float, exact=None, escaped=None, kind=None) 
     def run(knobs: Knobs, measure: bool) -> Outcome:
         with build_scene(scene, knobs) as sim:
             sim.run(seconds, measure=measure)
-            name0, body = sim.bodies()[0]
-            import esper
-
-            from engine.components import Collider
-
-            radius = esper.component_for_entity(next(iter(sim.names)), Collider).radius
+            _, body = sim.bodies()[0]
+            radius = polygon.bounding_radius(scene.bodies[0].shape.outline())
             m = sim.metrics
             # Energy may only rise where something does work on the body (gravity here).
             scored = m.initial_energy > 0 and scene.gravity == (0.0, 0.0)
@@ -82,7 +79,7 @@ def _scene_case(name: str, seconds: float, exact=None, escaped=None, kind=None) 
             out.extra["bodies"] = {n: (b.vx, b.vy, b.mass) for n, b in sim.bodies()}
             return out
 
-    return Case(name, kind or ("closed form" if exact else "reference"), seconds, run, exact)
+    return Case(name, "closed form" if exact else "reference", seconds, run, exact)
 
 
 def pile_case(settle: float = 2.0, watch: float = 0.5) -> Case:

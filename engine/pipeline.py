@@ -69,7 +69,7 @@ def make_wall(outline: Sequence[polygon.Vec], material: Material) -> Wall:
         return min(xs), min(ys), max(xs), max(ys)
 
     return Wall(outline=outline, pieces=pieces, normals=tuple(polygon.edge_normals(p) for p in pieces),
-                material=material, aabb=box(outline), piece_aabbs=tuple(box(p) for p in pieces))
+                material=material, piece_aabbs=tuple(box(p) for p in pieces))
 
 
 def processors_for(ctx: PhysicsContext, effects: Iterable[str], contacts: bool, has_walls: bool,

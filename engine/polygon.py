@@ -121,10 +121,14 @@ def random_polygon(seed: int, vertices: int, radius: float) -> Outline:
 
 
 def _segments_intersect(a: Vec, b: Vec, c: Vec, d: Vec) -> bool:
-    """Closed-segment intersection, touching included."""
+    """Closed-segment intersection, touching included. Orientations within rounding of zero count as
+    collinear: a star's outline has several edges on one chord, which must not read as crossing."""
+    scale = max(abs(v) for p in (a, b, c, d) for v in p) or 1.0
+    eps = 1e-12 * scale * scale
 
     def orient(p: Vec, q: Vec, r: Vec) -> float:
-        return cross(q[0] - p[0], q[1] - p[1], r[0] - p[0], r[1] - p[1])
+        value = cross(q[0] - p[0], q[1] - p[1], r[0] - p[0], r[1] - p[1])
+        return 0.0 if abs(value) <= eps else value
 
     def on_segment(p: Vec, q: Vec, r: Vec) -> bool:
         return min(p[0], q[0]) <= r[0] <= max(p[0], q[0]) and min(p[1], q[1]) <= r[1] <= max(p[1], q[1])

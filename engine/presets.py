@@ -6,7 +6,7 @@ wall, whatever the preset.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Literal
 
 PositionCorrection = Literal["split", "ngs", "none"]
@@ -29,9 +29,6 @@ class Knobs:
             raise ValueError(f"iterations must be 1..100, got {self.iterations}")
         if self.position_correction not in POSITION_CORRECTIONS:
             raise ValueError(f"position_correction must be one of {POSITION_CORRECTIONS}")
-
-    def with_(self, **changes: object) -> Knobs:
-        return replace(self, **changes)
 
 
 # Chosen from the Pareto front of docs/accuracy.md (`polygolf bench accuracy`): each is a point of

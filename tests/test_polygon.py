@@ -105,3 +105,14 @@ def test_random_polygons_split_into_convex_pieces(seed, n):
 def test_convex_outline_is_its_own_piece():
     square = polygon.regular_polygon(4, 1.0)
     assert polygon.convex_pieces(square) == [square]
+
+
+@given(radius=st.floats(0.01, 10.0), pq=st.sampled_from([(5, 2), (7, 2), (7, 3), (8, 3), (9, 4)]))
+def test_stars_of_any_size_validate(radius, pq):
+    """A star's outline has several edges on one chord; rounding must not make them 'cross'."""
+    assert polygon.is_simple(polygon.star_polygon(*pq, radius))
+    polygon.normalise(polygon.star_polygon(*pq, radius))
+
+
+def test_star_seven_three_at_an_awkward_radius_is_simple():
+    assert polygon.is_simple(polygon.star_polygon(7, 3, 0.14576153822865226))  # found by hypothesis

@@ -12,5 +12,4 @@ class Wall:
     pieces: tuple[Outline, ...]
     normals: tuple[tuple[Vec, ...], ...]
     material: Material
-    aabb: tuple[float, float, float, float]  # min x, min y, max x, max y
     piece_aabbs: tuple[tuple[float, float, float, float], ...]

@@ -12,7 +12,6 @@ class WaterProcessor(esper.Processor):
 
     def __init__(self, ctx: PhysicsContext) -> None:
         self.ctx = ctx
-        self.splashes = 0
 
     def process(self) -> None:
         zones = esper.get_components(Region, Water)
@@ -25,6 +24,5 @@ class WaterProcessor(esper.Processor):
                     body.x0, body.y0 = body.x, body.y
                     body.vx = body.vy = body.spin = 0.0
                     body.asleep = True
-                    self.splashes += 1
                     esper.dispatch_event("penalty", water.penalty)
                     break

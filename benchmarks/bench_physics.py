@@ -15,9 +15,8 @@ import random
 import statistics
 import time
 
-from engine.pipeline import build_scene
-from engine.presets import PRESETS
-from engine.scene import Scene
+from polygolf.engine.loading.scene import Scene, build_scene
+from polygolf.engine.physics.presets import PRESETS
 
 
 def one_ball_among_blocks() -> Scene:

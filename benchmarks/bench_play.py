@@ -15,11 +15,10 @@ import statistics
 import time
 
 import arcade
-
-from engine.autoplay import golfer_for
-from engine.course import find_course
-from game.session import Game
-from game.views.play import PlayView
+from polygolf.engine.golf.golfer import golfer_for
+from polygolf.engine.loading.course import find_course
+from polygolf.game.session import Game
+from polygolf.game.views.play import PlayView
 
 
 def main() -> None:

@@ -33,21 +33,31 @@ def make_window(visible: bool = True):
     return window
 
 
-def run_menu() -> None:
-    from game.session import Game
-    from game.views.menu import MenuView
+class StillFrame:
+    """The navigator of a rendered picture: one frame is drawn and no screen follows it. (The real
+    flow, `game.flow`, imports arcade.gui, which a headless EGL context cannot load.)"""
 
-    window = make_window()
-    window.show_view(MenuView(Game.load()))
-    window.run()
+    def __getattr__(self, move: str):
+        def refuse(*_args: object) -> None:
+            raise RuntimeError(f"a rendered frame has no next screen (asked for {move!r})")
+
+        return refuse
+
+
+def run_menu() -> None:
+    from polygolf.game.flow import ScreenFlow
+    from polygolf.game.session import Game
+
+    ScreenFlow(make_window(), Game.load()).menu()
+    arcade_run()
 
 
 def _game_for(course: str, hole: int, theme: str | None, shape: str | None):
     """The game set up from command-line choices; refuses an unknown course, theme, shape or hole."""
-    from engine.course import find_course
-    from engine.theme import find_theme
-    from game.session import Game
-    from game.shapes import parse_shape
+    from polygolf.engine.golf.holes import find_course
+    from polygolf.game.session import Game
+    from polygolf.game.shapes import parse_shape
+    from polygolf.game.theme import find_theme
 
     game = Game.load()
     game.course_index = game.courses.index(find_course(game.courses, course))
@@ -61,15 +71,18 @@ def _game_for(course: str, hole: int, theme: str | None, shape: str | None):
 
 
 def run_play(course: str, hole: int, theme: str | None, shape: str | None, preset: str) -> None:
-    import arcade
-
-    from game.views.play import PlayView
+    from polygolf.game.flow import ScreenFlow
 
     game = _game_for(course, hole, theme, shape)
     game.preset = preset
     game.guide_seen = True
-    window = make_window()
-    window.show_view(PlayView(game, game.start_round(hole - 1)))
+    ScreenFlow(make_window(), game).new_round(hole - 1)
+    arcade_run()
+
+
+def arcade_run() -> None:
+    import arcade
+
     arcade.run()
 
 
@@ -78,8 +91,7 @@ def render_hole(course: str, hole: int, theme: str | None, shape: str | None, ou
     """Draw a hole as the play view shows it, headless, to a PNG."""
     os.environ.setdefault("ARCADE_HEADLESS", "1")
     import arcade
-
-    from game.views.play import PlayView
+    from polygolf.game.views.play import PlayView
 
     game = _game_for(course, hole, theme, shape)
     broken = game.course.holes[hole - 1]
@@ -90,7 +102,7 @@ def render_hole(course: str, hole: int, theme: str | None, shape: str | None, ou
     except Exception as exc:
         raise NoDisplay(f"cannot open an offscreen GL context: {exc}") from None
     try:
-        view = PlayView(game, game.start_round(hole - 1))
+        view = PlayView(game, game.start_round(hole - 1), StillFrame())
         window.show_view(view)
         view.on_draw()
         image = arcade.get_image(0, 0, *window.get_framebuffer_size())

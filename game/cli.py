@@ -11,15 +11,17 @@ import json
 import sys
 from collections.abc import Sequence
 
-from engine.course import CONTENT_DIR
-from engine.presets import PRESETS
+from polygolf.engine.loading.paths import CONTENT_DIR
+from polygolf.engine.loading.yamlsource import ContentError
+from polygolf.engine.physics.presets import PRESETS
+
+from polygolf import __version__
 
 EXIT_CONTENT = 2
 
 
 def _simulate(args: argparse.Namespace) -> int:
-    from engine.pipeline import build_scene
-    from engine.scene import load_scene
+    from polygolf.engine.loading.scene import build_scene, load_scene
 
     scene = load_scene(args.scene)
     with build_scene(scene, args.preset) as sim:
@@ -40,7 +42,7 @@ def _simulate(args: argparse.Namespace) -> int:
 
 
 def _validate(args: argparse.Namespace) -> int:
-    from engine.validate import validate_paths
+    from polygolf.game.tools.validate import validate_paths
 
     count, problems = validate_paths(args.paths or [CONTENT_DIR])
     for problem in problems:
@@ -50,7 +52,7 @@ def _validate(args: argparse.Namespace) -> int:
 
 
 def _window(run, *args) -> int:
-    from game.app import NoDisplay
+    from polygolf.game.app import NoDisplay
 
     try:
         run(*args)
@@ -61,13 +63,13 @@ def _window(run, *args) -> int:
 
 
 def _menu(args: argparse.Namespace) -> int:
-    from game.app import run_menu
+    from polygolf.game.app import run_menu
 
     return _window(run_menu)
 
 
 def _play(args: argparse.Namespace) -> int:
-    from game.app import run_play
+    from polygolf.game.app import run_play
 
     return _window(run_play, args.course, args.hole, args.theme, args.shape, args.preset)
 
@@ -75,7 +77,7 @@ def _play(args: argparse.Namespace) -> int:
 def _render(args: argparse.Namespace) -> int:
     from pathlib import Path
 
-    from game.app import render_hole
+    from polygolf.game.app import render_hole
 
     out = _window(render_hole, args.course, args.hole, args.theme, args.shape, Path(args.out))
     if out == 0:
@@ -86,7 +88,7 @@ def _render(args: argparse.Namespace) -> int:
 def _bench_accuracy(args: argparse.Namespace) -> int:
     from pathlib import Path
 
-    from engine import accuracy
+    from polygolf.game.tools import accuracy
 
     cases = accuracy.all_cases(args.quick)
     if args.quick:
@@ -107,7 +109,7 @@ def _bench_accuracy(args: argparse.Namespace) -> int:
 
 
 def _explain(args: argparse.Namespace) -> int:
-    from engine.explain import explain
+    from polygolf.game.tools.explain import explain
 
     print(explain(args.path, args.preset))
     return 0
@@ -115,6 +117,7 @@ def _explain(args: argparse.Namespace) -> int:
 
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="polygolf", description="Mini golf with a polygon for a ball.")
+    parser.add_argument("--version", action="version", version=f"polygolf {__version__}")
     sub = parser.add_subparsers(dest="command", description="with no command, the game opens at its menu")
 
     sim = sub.add_parser("simulate", help="run a physics scene headless and report the result")
@@ -164,8 +167,6 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    from engine.yamlsource import ContentError
-
     parser = build_parser()
     args = parser.parse_args(argv)
     run = getattr(args, "run", _menu)

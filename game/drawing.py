@@ -17,11 +17,10 @@ from arcade.shape_list import (
     create_polygon,
     create_rectangle_filled,
 )
-
-from engine import polygon
-from engine.hole import HoleLayout
-from engine.settings import MAX_SHOT_SPEED, SHOT_POWER
-from engine.theme import Theme
+from polygolf.engine.golf.layout import HoleLayout
+from polygolf.engine.physics import polygon
+from polygolf.engine.physics.shot import clamp_arrow, shot_power
+from polygolf.game.theme import Theme
 
 HUD_HEIGHT = 44  # pixels
 MARGIN = 1.0  # metres of background around the hole
@@ -83,7 +82,7 @@ class HoleArt:
 
 def _slope_arrows(shapes: ShapeElementList, outline, push, colour) -> None:
     """A slope: a tint and a field of chevrons pointing downhill."""
-    from engine.components.hazards import Region
+    from polygolf.engine.components.hazards import Region
 
     xs, ys = zip(*outline)
     region = Region(tuple(outline), (min(xs), min(ys), max(xs), max(ys)))
@@ -130,15 +129,14 @@ class BallArt:
 def draw_arrow(origin: polygon.Vec, tip: polygon.Vec, theme: Theme) -> float:
     """The aiming arrow from where the ball was grabbed to the pointer, coloured by power.
     Returns the power fraction (1.0 = the strongest shot)."""
-    full = MAX_SHOT_SPEED / SHOT_POWER
-    dx, dy = tip[0] - origin[0], tip[1] - origin[1]
-    length = math.hypot(dx, dy)
+    arrow = (tip[0] - origin[0], tip[1] - origin[1])
+    length = math.hypot(*arrow)
     if length < 1e-6:
         return 0.0
-    fraction = min(1.0, length / full)
-    ux, uy = dx / length, dy / length
-    shown = min(length, full)
-    end = (origin[0] + ux * shown, origin[1] + uy * shown)
+    fraction = shot_power(arrow)
+    ux, uy = arrow[0] / length, arrow[1] / length
+    shown = clamp_arrow(arrow) or arrow
+    end = (origin[0] + shown[0], origin[1] + shown[1])
     weak, strong = theme.rgba("arrow"), theme.rgba("arrow_strong")
     colour = tuple(round(a + (b - a) * fraction) for a, b in zip(weak, strong))
     arcade.draw_line(origin[0], origin[1], end[0], end[1], colour, 0.12)

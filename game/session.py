@@ -4,11 +4,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from engine.course import Course, Hole, load_courses
-from engine.scene import ShapeSpec
-from engine.theme import Theme, load_themes
-from engine.yamlsource import ContentError
-from game.shapes import CATALOGUE
+from polygolf.engine.golf.holes import Course, Hole, load_courses
+from polygolf.engine.loading.scene import ShapeSpec
+from polygolf.engine.loading.yamlsource import ContentError
+from polygolf.game.shapes import CATALOGUE
+from polygolf.game.theme import Theme, load_themes
 
 _NAMES = {-4: "Condor", -3: "Albatross", -2: "Eagle", -1: "Birdie", 0: "Par", 1: "Bogey",
           2: "Double bogey", 3: "Triple bogey"}

@@ -5,7 +5,7 @@ from __future__ import annotations
 import random
 import re
 
-from engine.scene import ShapeSpec
+from polygolf.engine.loading.scene import ShapeSpec
 
 CATALOGUE: list[tuple[str, ShapeSpec]] = [
     ("Triangle", ShapeSpec(regular=3, radius=1.0)),

@@ -2,9 +2,8 @@
 
 from __future__ import annotations
 
-from engine.pipeline import build_scene
-from engine.scene import load_scene
-from engine.simulation import Simulation
+from polygolf.engine.assembly.simulation import Simulation
+from polygolf.engine.loading.scene import build_scene, load_scene
 
 from .conftest import SCENES
 

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import csv
 
-from engine import accuracy
-from engine.presets import PRESETS, Knobs
+from polygolf.engine.physics.presets import PRESETS, Knobs
+from polygolf.game.tools import accuracy
 
 
 def test_pareto_front_keeps_only_undominated_settings():

@@ -3,10 +3,9 @@
 from __future__ import annotations
 
 import pytest
-
-from engine import polygon
-from engine.collide import collide_polygons, separation
-from engine.toi import time_of_impact
+from polygolf.engine.physics import polygon
+from polygolf.engine.physics.collide import collide_polygons, separation
+from polygolf.engine.physics.toi import time_of_impact
 
 
 def at(verts, dx=0.0, dy=0.0):

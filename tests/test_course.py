@@ -7,13 +7,12 @@ import shutil
 import textwrap
 
 import pytest
-
-from engine.autoplay import play_hole
-from engine.course import HOLES_DIR, load_courses, load_hole, load_library
-from engine.hole import HoleWorld, layout_hole, point_clearance
-from engine.scene import ShapeSpec
-from engine.validate import validate_paths
-from engine.yamlsource import ContentError
+from polygolf.engine.golf.golfer import play_hole
+from polygolf.engine.golf.layout import HoleWorld, layout_hole, point_clearance
+from polygolf.engine.loading.course import HOLES_DIR, load_courses, load_hole, load_library
+from polygolf.engine.loading.scene import ShapeSpec
+from polygolf.engine.loading.yamlsource import ContentError
+from polygolf.game.tools.validate import validate_paths
 
 PENTAGON = ShapeSpec(regular=5, radius=1.0)
 

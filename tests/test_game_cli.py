@@ -9,14 +9,13 @@ import sys
 
 import numpy as np
 from PIL import Image
-
-from game.cli import main
+from polygolf.game.cli import main
 
 
 def run(*args, env_changes=None, drop=("DISPLAY", "WAYLAND_DISPLAY", "ARCADE_HEADLESS")):
     env = {k: v for k, v in os.environ.items() if k not in drop}
     env.update(env_changes or {})
-    return subprocess.run([sys.executable, "-m", "game.cli", *args], capture_output=True, text=True, env=env,
+    return subprocess.run([sys.executable, "-m", "polygolf.game.cli", *args], capture_output=True, text=True, env=env,
                           timeout=120)
 
 

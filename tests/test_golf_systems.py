@@ -6,19 +6,18 @@ import math
 
 import esper
 import pytest
-
-from engine import polygon
-from engine.components import Ball, Body, Cup, HoleState, Material, ShotInput
-from engine.context import PhysicsContext
-from engine.grid import SpatialGrid
-from engine.pipeline import make_body, make_collider
-from engine.presets import preset
-from engine.settings import MAX_SHOT_SPEED, MAX_SHOT_SPIN, SHOT_POWER, SPIN_RATIO
-from engine.shot import shot_velocity
-from engine.systems.cup import CupProcessor
-from engine.systems.launch import LaunchProcessor
-from engine.systems.scoring import ScoringProcessor
-from engine.systems.shot import ShotProcessor
+from polygolf.engine.assembly.assemble import make_body, make_collider
+from polygolf.engine.assembly.resources import PhysicsContext
+from polygolf.engine.components import Ball, Body, Cup, HoleState, Material, ShotInput
+from polygolf.engine.physics import polygon
+from polygolf.engine.physics.grid import SpatialGrid
+from polygolf.engine.physics.presets import preset
+from polygolf.engine.physics.settings import MAX_SHOT_SPEED, MAX_SHOT_SPIN, SHOT_POWER, SPIN_RATIO
+from polygolf.engine.physics.shot import shot_velocity
+from polygolf.engine.systems.cup import CupProcessor
+from polygolf.engine.systems.launch import LaunchProcessor
+from polygolf.engine.systems.scoring import ScoringProcessor
+from polygolf.engine.systems.shot import ShotProcessor
 
 SQUARE = polygon.normalise(polygon.regular_polygon(4, 0.45))[0]
 

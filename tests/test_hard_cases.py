@@ -20,8 +20,7 @@ def world_vertices(body, outline):
 
 def outline_of(sim, name="ball"):
     import esper
-
-    from engine.components import Collider
+    from polygolf.engine.components import Collider
 
     esper.switch_world(sim.world)
     ent = next(e for e, n in sim.names.items() if n == name)

@@ -7,22 +7,34 @@ import math
 
 import esper
 import pytest
-
-from engine import polygon
-from engine.components import Ball, Body, Bumper, Drag, HoleState, Ice, Material, Region, Sand, Slope, Water, Windmill
-from engine.context import PhysicsContext
-from engine.course import load_courses
-from engine.grid import SpatialGrid
-from engine.hole import HoleWorld, hole_effects
-from engine.pipeline import make_body, make_collider, make_wall, processors_for
-from engine.presets import preset
-from engine.scene import ShapeSpec
-from engine.systems.drag import DragProcessor
-from engine.systems.ice import IceProcessor
-from engine.systems.sand import SandProcessor
-from engine.systems.scoring import ScoringProcessor
-from engine.systems.slope import SlopeProcessor
-from engine.systems.water import WaterProcessor
+from polygolf.engine.assembly.assemble import make_body, make_collider, make_wall, processors_for
+from polygolf.engine.assembly.resources import PhysicsContext
+from polygolf.engine.components import (
+    Ball,
+    Body,
+    Bumper,
+    Drag,
+    HoleState,
+    Ice,
+    Material,
+    Region,
+    Sand,
+    Slope,
+    Water,
+    Windmill,
+)
+from polygolf.engine.golf.layout import HoleWorld, hole_effects
+from polygolf.engine.loading.course import load_courses
+from polygolf.engine.loading.scene import ShapeSpec
+from polygolf.engine.physics import polygon
+from polygolf.engine.physics.grid import SpatialGrid
+from polygolf.engine.physics.presets import preset
+from polygolf.engine.systems.drag import DragProcessor
+from polygolf.engine.systems.ice import IceProcessor
+from polygolf.engine.systems.sand import SandProcessor
+from polygolf.engine.systems.scoring import ScoringProcessor
+from polygolf.engine.systems.slope import SlopeProcessor
+from polygolf.engine.systems.water import WaterProcessor
 
 SQUARE = polygon.normalise(polygon.regular_polygon(4, 0.45))[0]
 BIG = ((-50.0, -50.0), (50.0, -50.0), (50.0, 50.0), (-50.0, 50.0))
@@ -207,7 +219,7 @@ def test_every_hole_holds_exactly_the_systems_it_needs(courses):
 
 
 def test_hazard_course_plays_end_to_end(courses):
-    from engine.autoplay import play_hole
+    from polygolf.engine.golf.golfer import play_hole
 
     hazards = next(c for c in courses if c.name == "Hazards")
     for hole in hazards.playable:

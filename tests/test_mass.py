@@ -5,9 +5,8 @@ from __future__ import annotations
 import math
 
 import pytest
-
-from engine import polygon
-from engine.mass import mass_properties
+from polygolf.engine.physics import polygon
+from polygolf.engine.physics.mass import mass_properties
 
 
 def test_rectangle_matches_textbook_inertia():

@@ -7,9 +7,8 @@ import math
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
-
-from engine import polygon
-from engine.polygon import PolygonError
+from polygolf.engine.physics import polygon
+from polygolf.engine.physics.polygon import PolygonError
 
 
 @pytest.mark.parametrize("sides", range(3, 13))

@@ -7,10 +7,8 @@ import math
 
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-
-from engine.pipeline import build_scene
-from engine.scene import Scene
-from engine.settings import MAX_SHOT_SPEED
+from polygolf.engine.loading.scene import Scene, build_scene
+from polygolf.engine.physics.settings import MAX_SHOT_SPEED
 
 ROOM_W, ROOM_H = 6.0, 4.0
 
@@ -56,8 +54,7 @@ def test_any_shot_in_a_closed_box_is_sane(shape, radius, angle, speed, heading, 
     with build_scene(scene, preset) as sim:
         ball = sim.body("ball")
         import esper
-
-        from engine.components import Collider
+        from polygolf.engine.components import Collider
 
         outline = esper.component_for_entity(next(iter(sim.names)), Collider).outline
         e0 = sim.kinetic_energy()

@@ -8,11 +8,9 @@ import sys
 import textwrap
 
 import pytest
-
-from engine.pipeline import build_scene
-from engine.scene import load_scene
-from engine.yamlsource import ContentError
-from game.cli import main
+from polygolf.engine.loading.scene import build_scene, load_scene
+from polygolf.engine.loading.yamlsource import ContentError
+from polygolf.game.cli import main
 
 from .conftest import SCENES
 
@@ -118,7 +116,7 @@ def test_explain_says_why(capsys):
 
 
 def test_installed_command_runs():
-    out = subprocess.run([sys.executable, "-m", "game.cli", "simulate", str(SCENES / "long-roll.yaml"),
+    out = subprocess.run([sys.executable, "-m", "polygolf.game.cli", "simulate", str(SCENES / "long-roll.yaml"),
                           "--seconds", "1", "--json"], capture_output=True, text=True, check=True).stdout
     assert json.loads(out)["systems"] == ["integrate", "spin", "drag"]
 

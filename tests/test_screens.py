@@ -10,16 +10,15 @@ from pathlib import Path
 import arcade
 import numpy as np
 import pytest
-
-from engine.autoplay import golfer_for
-from engine.course import load_courses
-from game.session import Game, HoleResult
-from game.views.between import BetweenView
-from game.views.guide import GuideView
-from game.views.menu import MenuView
-from game.views.pause import PauseView
-from game.views.play import PlayView
-from game.views.results import ResultsView
+from polygolf.engine.golf.golfer import golfer_for
+from polygolf.engine.loading.course import load_courses
+from polygolf.game.session import Game, HoleResult
+from polygolf.game.views.between import BetweenView
+from polygolf.game.views.guide import GuideView
+from polygolf.game.views.menu import MenuView
+from polygolf.game.views.pause import PauseView
+from polygolf.game.views.play import PlayView
+from polygolf.game.views.results import ResultsView
 
 LEFT = arcade.MOUSE_BUTTON_LEFT
 
@@ -210,7 +209,7 @@ def test_a_full_round_of_nine_holes_ends_on_the_scorecard_with_the_right_totals(
 def test_a_broken_hole_is_skipped_with_a_visible_message(window, tmp_path, shots_dir):
     import shutil
 
-    from engine.course import HOLES_DIR
+    from polygolf.engine.loading.course import HOLES_DIR
 
     shutil.copy(HOLES_DIR / "tiles.yaml", tmp_path / "tiles.yaml")
     shutil.copy(HOLES_DIR / "straight.yaml", tmp_path / "straight.yaml")

@@ -6,24 +6,23 @@ import math
 
 import esper
 import pytest
-
-from engine import polygon
-from engine.components import Body, Drag, Material
-from engine.contact import ContactPoint, Manifold
-from engine.context import PhysicsContext
-from engine.grid import SpatialGrid
-from engine.pipeline import make_body, make_collider, make_wall
-from engine.presets import preset
-from engine.settings import TIME_TO_REST, TOI_TARGET
-from engine.systems.broadphase import BroadphaseProcessor
-from engine.systems.ccd import CCDProcessor
-from engine.systems.drag import DragProcessor
-from engine.systems.gravity import GravityProcessor
-from engine.systems.integrate import IntegrateProcessor
-from engine.systems.narrowphase import NarrowphaseProcessor
-from engine.systems.resolve import ResolveProcessor
-from engine.systems.restitution import RestitutionProcessor
-from engine.systems.spin import SpinProcessor
+from polygolf.engine.assembly.assemble import make_body, make_collider, make_wall
+from polygolf.engine.assembly.resources import PhysicsContext
+from polygolf.engine.components import Body, Drag, Material
+from polygolf.engine.physics import polygon
+from polygolf.engine.physics.contact import ContactPoint, Manifold
+from polygolf.engine.physics.grid import SpatialGrid
+from polygolf.engine.physics.presets import preset
+from polygolf.engine.physics.settings import TIME_TO_REST, TOI_TARGET
+from polygolf.engine.systems.broadphase import BroadphaseProcessor
+from polygolf.engine.systems.ccd import CCDProcessor
+from polygolf.engine.systems.drag import DragProcessor
+from polygolf.engine.systems.gravity import GravityProcessor
+from polygolf.engine.systems.integrate import IntegrateProcessor
+from polygolf.engine.systems.narrowphase import NarrowphaseProcessor
+from polygolf.engine.systems.resolve import ResolveProcessor
+from polygolf.engine.systems.restitution import RestitutionProcessor
+from polygolf.engine.systems.spin import SpinProcessor
 
 SQUARE = polygon.normalise(polygon.regular_polygon(4, 0.5))[0]
 

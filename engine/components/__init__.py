@@ -1,15 +1,16 @@
 """Plain-data components: no behaviour beyond small derived helpers."""
 
-from engine.components.ball import Ball
-from engine.components.body import Body
-from engine.components.collider import Collider, Material
-from engine.components.cup import Cup
-from engine.components.drag import Drag
-from engine.components.hazards import Bumper, Ice, Region, Sand, Slope, Water, Windmill
-from engine.components.hole_state import HoleState
-from engine.components.name import Name
-from engine.components.shot import ShotInput
-from engine.components.wall import Wall
+from polygolf.engine.components.ball import Ball
+from polygolf.engine.components.body import Body, BodyScratch
+from polygolf.engine.components.collider import Collider, Material
+from polygolf.engine.components.cup import Cup
+from polygolf.engine.components.drag import Drag
+from polygolf.engine.components.hazards import Bumper, Ice, Region, Sand, Slope, Water, Windmill
+from polygolf.engine.components.hole_state import HoleState
+from polygolf.engine.components.launcher import Launcher
+from polygolf.engine.components.name import Name
+from polygolf.engine.components.shot import ShotInput
+from polygolf.engine.components.wall import Wall
 
-__all__ = ["Ball", "Body", "Bumper", "Collider", "Cup", "Drag", "HoleState", "Ice", "Material", "Name", "Region",
-           "Sand", "ShotInput", "Slope", "Wall", "Water", "Windmill"]
+__all__ = ["Ball", "Body", "BodyScratch", "Bumper", "Collider", "Cup", "Drag", "HoleState", "Ice", "Launcher",
+           "Material", "Name", "Region", "Sand", "ShotInput", "Slope", "Wall", "Water", "Windmill"]

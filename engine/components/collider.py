@@ -1,15 +1,10 @@
 import math
 from dataclasses import dataclass, field
 
-from engine.polygon import Outline, Vec
+from polygolf.engine.physics.body import Material
+from polygolf.engine.physics.polygon import Outline, Vec
 
-
-@dataclass(slots=True)
-class Material:
-    """Contact coefficients; a contact uses the product of both sides' values."""
-
-    restitution: float = 1.0
-    friction: float = 1.0
+__all__ = ["Collider", "Material"]
 
 
 @dataclass(slots=True)

@@ -6,7 +6,7 @@ windmill is a kinematic `Body` + `Collider` with a `Windmill`.
 
 from dataclasses import dataclass
 
-from engine.polygon import Outline, contains
+from polygolf.engine.physics.polygon import Outline, contains
 
 
 @dataclass(slots=True)

@@ -1,7 +1,7 @@
 from dataclasses import dataclass
 
-from engine.components.collider import Material
-from engine.polygon import Outline, Vec
+from polygolf.engine.components.collider import Material
+from polygolf.engine.physics.polygon import Outline, Vec
 
 
 @dataclass(slots=True)

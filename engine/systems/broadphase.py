@@ -1,34 +1,33 @@
 import esper
-
-from engine.components import Body, Collider
-from engine.context import PhysicsContext
-from engine.grid import SpatialGrid
-from engine.settings import CONTACT_MARGIN
+from polygolf.engine.assembly.resources import Resources
+from polygolf.engine.components import Body, Collider
+from polygolf.engine.physics.grid import SpatialGrid
+from polygolf.engine.physics.settings import CONTACT_MARGIN
 
 
 class BroadphaseProcessor(esper.Processor):
     """Candidate pairs from bounding boxes on a uniform grid: moving bodies against the static grid
-    of wall pieces, and bodies against each other. Resting bodies are not looked up at all."""
+    of wall pieces, and bodies against each other. Resting bodies are not looked up at all.
+    Reads the static index; writes the candidates."""
 
     name = "broadphase"
 
-    def __init__(self, ctx: PhysicsContext, cell_size: float) -> None:
-        self.ctx = ctx
-        self._dynamic_grid = SpatialGrid(cell_size)
+    def __init__(self, res: Resources) -> None:
+        self.statics, self.candidates = res.statics, res.candidates
+        self._dynamic_grid = SpatialGrid(res.statics.grid.cell_size)
 
     def process(self) -> None:
-        ctx = self.ctx
-        candidates: dict[int, list] = {}
         bodies = esper.get_components(Body, Collider)
-        static_grid = ctx.static_grid
+        static_grid = self.statics.grid
+        walls: dict[int, list] = {}
         for ent, (body, col) in bodies:
             if body.asleep or body.inv_mass == 0.0:
                 continue
             r = col.radius + CONTACT_MARGIN
             found = static_grid.query((body.x - r, body.y - r, body.x + r, body.y + r))
             if found:
-                candidates[ent] = found
-        ctx.wall_candidates = candidates
+                walls[ent] = found
+        self.candidates.walls = walls
 
         pairs: list[tuple[int, int]] = []
         if len(bodies) > 1:
@@ -38,11 +37,9 @@ class BroadphaseProcessor(esper.Processor):
                 r = col.radius + CONTACT_MARGIN
                 grid.insert(ent, (body.x - r, body.y - r, body.x + r, body.y + r))
             for ea, eb in grid.pairs():
-                if not (_moving(esper.component_for_entity(ea, Body))
-                        or _moving(esper.component_for_entity(eb, Body))):
-                    continue
-                pairs.append((ea, eb))
-        ctx.body_pairs = pairs
+                if _moving(esper.component_for_entity(ea, Body)) or _moving(esper.component_for_entity(eb, Body)):
+                    pairs.append((ea, eb))
+        self.candidates.pairs = pairs
 
 
 def _moving(body: Body) -> bool:

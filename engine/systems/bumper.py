@@ -1,8 +1,7 @@
 import esper
-
-from engine.components import Bumper
-from engine.context import PhysicsContext
-from engine.settings import RESTITUTION_THRESHOLD
+from polygolf.engine.assembly.resources import Resources
+from polygolf.engine.components import Bumper
+from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 
 LIT_SECONDS = 0.25
 
@@ -14,14 +13,14 @@ class BumperProcessor(esper.Processor):
 
     name = "bumper"
 
-    def __init__(self, ctx: PhysicsContext) -> None:
-        self.ctx = ctx
+    def __init__(self, res: Resources) -> None:
+        self.config, self.contacts = res.config, res.contacts
 
     def process(self) -> None:
-        dt = self.ctx.dt
+        dt = self.config.dt
         for _, bumper in esper.get_component(Bumper):
             bumper.lit = max(0.0, bumper.lit - dt)
-        for m in self.ctx.manifolds:
+        for m in self.contacts.manifolds:
             if m.entity_b != -1:
                 continue  # bumpers are walls: static manifolds only
             struck = [p for p in m.points if p.approach_speed < -RESTITUTION_THRESHOLD]

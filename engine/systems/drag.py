@@ -1,9 +1,8 @@
 import math
 
 import esper
-
-from engine.components import Body, Drag
-from engine.context import PhysicsContext
+from polygolf.engine.assembly.resources import Resources
+from polygolf.engine.components import Body, Drag
 
 
 def decay(value: float, rate: float, resistance: float, dt: float) -> float:
@@ -25,11 +24,11 @@ class DragProcessor(esper.Processor):
 
     name = "drag"
 
-    def __init__(self, ctx: PhysicsContext) -> None:
-        self.ctx = ctx
+    def __init__(self, res: Resources) -> None:
+        self.config = res.config
 
     def process(self) -> None:
-        dt = self.ctx.dt
+        dt = self.config.dt
         for _, (body, drag) in esper.get_components(Body, Drag):
             if body.asleep or body.inv_mass == 0.0:
                 continue

@@ -1,7 +1,6 @@
 import esper
-
-from engine.components import Body
-from engine.context import PhysicsContext
+from polygolf.engine.assembly.resources import Resources
+from polygolf.engine.components import Body
 
 
 class GravityProcessor(esper.Processor):
@@ -10,12 +9,12 @@ class GravityProcessor(esper.Processor):
 
     name = "gravity"
 
-    def __init__(self, ctx: PhysicsContext) -> None:
-        self.ctx = ctx
+    def __init__(self, res: Resources) -> None:
+        self.config = res.config
 
     def process(self) -> None:
-        gx, gy = self.ctx.gravity
-        dt = self.ctx.dt
+        gx, gy = self.config.gravity
+        dt = self.config.dt
         for _, body in esper.get_component(Body):
             if body.inv_mass > 0.0 and not body.asleep:
                 body.vx += gx * dt

@@ -1,5 +1,5 @@
-from engine.components import Ice
-from engine.systems.surface import SurfaceProcessor
+from polygolf.engine.components import Ice
+from polygolf.engine.systems.surface import SurfaceProcessor
 
 
 class IceProcessor(SurfaceProcessor):

@@ -1,8 +1,7 @@
 import esper
-
-from engine.components import Body, Drag
-from engine.context import PhysicsContext
-from engine.settings import REST_ANGULAR, REST_LINEAR, REST_SPEED_CAP, TIME_TO_REST
+from polygolf.engine.assembly.resources import Resources
+from polygolf.engine.components import Body, Drag
+from polygolf.engine.physics.settings import REST_ANGULAR, REST_LINEAR, REST_SPEED_CAP, TIME_TO_REST
 
 
 class IntegrateProcessor(esper.Processor):
@@ -18,37 +17,36 @@ class IntegrateProcessor(esper.Processor):
 
     name = "integrate"
 
-    def __init__(self, ctx: PhysicsContext) -> None:
-        self.ctx = ctx
+    def __init__(self, res: Resources) -> None:
+        self.config, self.contacts = res.config, res.contacts
 
     def process(self) -> None:
-        dt = self.ctx.dt
+        dt = self.config.dt
         still_step = REST_LINEAR * dt
         still_turn = REST_ANGULAR * dt
-        touching = self.ctx.touching
+        touching = self.contacts.touching
         for ent, body in esper.get_component(Body):
             if body.asleep:
                 continue
+            s = body.scratch
             if body.inv_mass > 0.0 and (ent in touching or esper.has_component(ent, Drag)):
-                dx, dy = body.x - body.x0, body.y - body.y0
-                if (dx * dx + dy * dy < still_step * still_step and abs(body.angle - body.angle0) < still_turn
+                dx, dy = body.x - s.x0, body.y - s.y0
+                if (dx * dx + dy * dy < still_step * still_step and abs(body.angle - s.angle0) < still_turn
                         and body.vx * body.vx + body.vy * body.vy < REST_SPEED_CAP * REST_SPEED_CAP):
-                    body.still_time += dt
-                    if body.still_time >= TIME_TO_REST:
-                        body.asleep = True
-                        body.vx = body.vy = body.spin = 0.0
-                        body.x0, body.y0, body.angle0 = body.x, body.y, body.angle
+                    s.still_time += dt
+                    if s.still_time >= TIME_TO_REST:
+                        body.rest()
                         continue
                 else:
-                    body.still_time = 0.0
-            body.x0, body.y0, body.angle0 = body.x, body.y, body.angle
+                    s.still_time = 0.0
+            body.mark_start()
             step = dt
-            if body.lag:
+            if s.lag:
                 # Continuous collision stopped the body early last substep; it now moves on with its
                 # new velocity for the time it lost, so impacts do not slow the clock.
-                step += body.lag
-                body.angle += body.spin * body.lag
-                body.lag = 0.0
-            body.moved_for = step
+                step += s.lag
+                body.angle += body.spin * s.lag
+                s.lag = 0.0
+            s.moved_for = step
             body.x += body.vx * step
             body.y += body.vy * step

@@ -1,7 +1,6 @@
 import esper
-
-from engine.components import Ball, Body
-from engine.context import PhysicsContext
+from polygolf.engine.assembly.resources import Resources
+from polygolf.engine.components import Ball, Body, Launcher
 
 
 class LaunchProcessor(esper.Processor):
@@ -10,20 +9,18 @@ class LaunchProcessor(esper.Processor):
 
     name = "launch"
 
-    def __init__(self, ctx: PhysicsContext, velocity: tuple[float, float], every: float,
-                 tee: tuple[float, float]) -> None:
-        self.ctx = ctx
-        self.velocity, self.every, self.tee = velocity, every, tee
-        self.clock = every  # launch on the first substep
+    def __init__(self, res: Resources) -> None:
+        self.config = res.config
 
     def process(self) -> None:
-        self.clock += self.ctx.dt
-        if self.clock < self.every - 1e-9:  # substeps add up to `every` only to rounding
-            return
-        self.clock = 0.0
-        for _, (body, _) in esper.get_components(Body, Ball):
-            body.x, body.y = self.tee
-            body.angle = 0.0
-            body.vx, body.vy = self.velocity
-            body.spin = 0.0
-            body.wake()
+        for _, launcher in esper.get_component(Launcher):
+            launcher.clock += self.config.dt
+            if launcher.clock < launcher.every - 1e-9:  # substeps add up to `every` only to rounding
+                continue
+            launcher.clock = 0.0
+            for _, (body, _) in esper.get_components(Body, Ball):
+                body.x, body.y = launcher.tee
+                body.angle = 0.0
+                body.vx, body.vy = launcher.velocity
+                body.spin = 0.0
+                body.wake()

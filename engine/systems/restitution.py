@@ -1,8 +1,7 @@
 import esper
-
-from engine import solver
-from engine.context import PhysicsContext
-from engine.settings import RESTITUTION_THRESHOLD
+from polygolf.engine.assembly.resources import Resources
+from polygolf.engine.physics import solver
+from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 
 
 class RestitutionProcessor(esper.Processor):
@@ -11,9 +10,9 @@ class RestitutionProcessor(esper.Processor):
 
     name = "restitution"
 
-    def __init__(self, ctx: PhysicsContext) -> None:
-        self.ctx = ctx
+    def __init__(self, res: Resources) -> None:
+        self.contacts, self.stats = res.contacts, res.stats
 
     def process(self) -> None:
-        if self.ctx.manifolds:
-            self.ctx.bounces += solver.apply_restitution(self.ctx.manifolds, RESTITUTION_THRESHOLD)
+        if self.contacts.manifolds:
+            self.stats.bounces += solver.apply_restitution(self.contacts.manifolds, RESTITUTION_THRESHOLD)

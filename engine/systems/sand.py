@@ -1,5 +1,5 @@
-from engine.components import Sand
-from engine.systems.surface import SurfaceProcessor
+from polygolf.engine.components import Sand
+from polygolf.engine.systems.surface import SurfaceProcessor
 
 
 class SandProcessor(SurfaceProcessor):

@@ -1,18 +1,17 @@
 import esper
-
-from engine.components import Ball, Body, Collider, ShotInput
-from engine.context import PhysicsContext
-from engine.shot import shot_velocity
+from polygolf.engine.assembly.resources import Resources
+from polygolf.engine.components import Ball, Body, Collider, ShotInput
+from polygolf.engine.physics.shot import shot_velocity
 
 
 class ShotProcessor(esper.Processor):
     """Turns a requested shot into velocity, only while the ball is at rest; remembers that resting
-    place and announces the shot with the esper event "shot" (the scoring system counts it)."""
+    place and says so ("shot": the scoring stage counts it)."""
 
     name = "shot"
 
-    def __init__(self, ctx: PhysicsContext) -> None:
-        self.ctx = ctx
+    def __init__(self, res: Resources) -> None:
+        self.events = res.events
 
     def process(self) -> None:
         for ent, (body, collider, shot) in esper.get_components(Body, Collider, ShotInput):
@@ -36,4 +35,4 @@ class ShotProcessor(esper.Processor):
             body.vy += dvy
             body.spin += dspin
             shot.accepted += 1
-            esper.dispatch_event("shot", ent)
+            self.events.emit("shot", ent)

@@ -1,7 +1,6 @@
 import esper
-
-from engine.components import Ball, Body, Region, Slope
-from engine.context import PhysicsContext
+from polygolf.engine.assembly.resources import Resources
+from polygolf.engine.components import Ball, Body, Region, Slope
 
 
 class SlopeProcessor(esper.Processor):
@@ -10,11 +9,11 @@ class SlopeProcessor(esper.Processor):
 
     name = "slope"
 
-    def __init__(self, ctx: PhysicsContext) -> None:
-        self.ctx = ctx
+    def __init__(self, res: Resources) -> None:
+        self.config = res.config
 
     def process(self) -> None:
-        dt = self.ctx.dt
+        dt = self.config.dt
         zones = esper.get_components(Region, Slope)
         for _, (body, _) in esper.get_components(Body, Ball):
             if body.asleep:

@@ -1,20 +1,19 @@
 import esper
-
-from engine.components import Body
-from engine.context import PhysicsContext
+from polygolf.engine.assembly.resources import Resources
+from polygolf.engine.components import Body
 
 
 class SpinProcessor(esper.Processor):
-    """Integrates orientation. Without the `spin` effect bodies keep their angle and the pipeline
+    """Integrates orientation. Without the `spin` effect bodies keep their angle and the assembler
     gives them infinite inertia, so contacts cannot make them turn either."""
 
     name = "spin"
 
-    def __init__(self, ctx: PhysicsContext) -> None:
-        self.ctx = ctx
+    def __init__(self, res: Resources) -> None:
+        self.config = res.config
 
     def process(self) -> None:
-        dt = self.ctx.dt
+        dt = self.config.dt
         for _, body in esper.get_component(Body):
             if body.spin and not body.asleep:
                 body.angle += body.spin * dt

@@ -1,7 +1,6 @@
 import esper
-
-from engine.components import Ball, Body, Drag, Region
-from engine.context import PhysicsContext
+from polygolf.engine.assembly.resources import Resources
+from polygolf.engine.components import Ball, Body, Drag, Region
 
 
 class SurfaceProcessor(esper.Processor):
@@ -10,8 +9,8 @@ class SurfaceProcessor(esper.Processor):
 
     marker: type
 
-    def __init__(self, ctx: PhysicsContext) -> None:
-        self.ctx = ctx
+    def __init__(self, res: Resources) -> None:
+        pass  # reads components only
 
     def process(self) -> None:
         zones = esper.get_components(Region, self.marker)

@@ -1,7 +1,6 @@
 import esper
-
-from engine.components import Body, Windmill
-from engine.context import PhysicsContext
+from polygolf.engine.assembly.resources import Resources
+from polygolf.engine.components import Body, Windmill
 
 
 class WindmillProcessor(esper.Processor):
@@ -10,8 +9,8 @@ class WindmillProcessor(esper.Processor):
 
     name = "windmill"
 
-    def __init__(self, ctx: PhysicsContext) -> None:
-        self.ctx = ctx
+    def __init__(self, res: Resources) -> None:
+        pass  # reads components only
 
     def process(self) -> None:
         for _, (body, windmill) in esper.get_components(Body, Windmill):

@@ -4,15 +4,16 @@ from __future__ import annotations
 
 import arcade
 from arcade.gui import UIAnchorLayout, UIView
-
-from game.session import Game, HoleResult, Round, golf_name
-from game.views.widgets import themed_button, title
+from polygolf.game.session import Game, HoleResult, Round, golf_name
+from polygolf.game.views.navigation import Navigator
+from polygolf.game.views.widgets import themed_button, title
 
 
 class BetweenView(UIView):
-    def __init__(self, game: Game, round_: Round, result: HoleResult) -> None:
+    def __init__(self, game: Game, round_: Round, result: HoleResult, flow: Navigator) -> None:
         super().__init__()
         self.game = game
+        self.flow = flow
         self.round = round_
         theme = game.theme
         self.background_color = theme.rgba("background")
@@ -39,13 +40,7 @@ class BetweenView(UIView):
         self.ui.add(anchor)
 
     def on_continue(self, _event=None) -> None:
-        from game.views.play import PlayView
-        from game.views.results import ResultsView
-
-        if self.round.over:
-            self.window.show_view(ResultsView(self.game, self.round))
-        else:
-            self.window.show_view(PlayView(self.game, self.round))
+        self.flow.next_hole()
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:
         if symbol in (arcade.key.ENTER, arcade.key.RETURN, arcade.key.SPACE):

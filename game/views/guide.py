@@ -6,9 +6,8 @@ from collections.abc import Callable
 
 import arcade
 from arcade.gui import UIAnchorLayout, UIBoxLayout, UIView
-
-from game.session import Game
-from game.views.widgets import themed_button, title
+from polygolf.game.session import Game
+from polygolf.game.views.widgets import themed_button, title
 
 GUIDE = """\
 Your ball is a polygon. Get it into the cup in as few strokes as you can.
@@ -27,7 +26,7 @@ Scoring: each hole has a par. After 10 strokes the ball is picked up. R restarts
 
 
 class GuideView(UIView):
-    def __init__(self, game: Game, then: Callable[[], arcade.View]) -> None:
+    def __init__(self, game: Game, then: Callable[[], None]) -> None:
         super().__init__()
         self.game = game
         self.then = then
@@ -46,7 +45,7 @@ class GuideView(UIView):
 
     def on_continue(self, _event=None) -> None:
         self.game.guide_seen = True
-        self.window.show_view(self.then())
+        self.then()
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:
         if symbol in (arcade.key.ENTER, arcade.key.RETURN, arcade.key.SPACE, arcade.key.ESCAPE):

@@ -5,18 +5,19 @@ from __future__ import annotations
 
 import arcade
 from arcade.gui import UIAnchorLayout, UIBoxLayout, UIView
-
-from engine.hole import ball_outline
-from game.drawing import BallArt
-from game.session import Game
-from game.shapes import random_shape
-from game.views.widgets import themed_button, title
+from polygolf.engine.golf.layout import ball_outline
+from polygolf.game.drawing import BallArt
+from polygolf.game.session import Game
+from polygolf.game.shapes import random_shape
+from polygolf.game.views.navigation import Navigator
+from polygolf.game.views.widgets import themed_button, title
 
 
 class MenuView(UIView):
-    def __init__(self, game: Game) -> None:
+    def __init__(self, game: Game, flow: Navigator) -> None:
         super().__init__()
         self.game = game
+        self.flow = flow
         self.spin = 0.0
         self.build()
 
@@ -52,14 +53,7 @@ class MenuView(UIView):
 
     # Actions: each changes the game's choices and rebuilds the screen in the new look.
     def on_play(self, _event=None) -> None:
-        from game.views.guide import GuideView
-        from game.views.play import PlayView
-
-        round_ = self.game.start_round()
-        if not self.game.guide_seen:
-            self.window.show_view(GuideView(self.game, then=lambda: PlayView(self.game, round_)))
-        else:
-            self.window.show_view(PlayView(self.game, round_))
+        self.flow.new_round()
 
     def on_theme(self, _event=None) -> None:
         self.game.next_theme()
@@ -78,12 +72,10 @@ class MenuView(UIView):
         self.build()
 
     def on_guide(self, _event=None) -> None:
-        from game.views.guide import GuideView
-
-        self.window.show_view(GuideView(self.game, then=lambda: MenuView(self.game)))
+        self.flow.guide()
 
     def on_quit(self, _event=None) -> None:
-        self.window.close()
+        self.flow.quit()
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:
         if symbol in (arcade.key.ENTER, arcade.key.RETURN, arcade.key.SPACE):

@@ -4,16 +4,17 @@ from __future__ import annotations
 
 import arcade
 from arcade.gui import UIAnchorLayout, UIBoxLayout, UIView
-
-from game.session import Game
-from game.views.widgets import themed_button, title
+from polygolf.game.session import Game
+from polygolf.game.views.navigation import Navigator
+from polygolf.game.views.widgets import themed_button, title
 
 
 class PauseView(UIView):
-    def __init__(self, game: Game, play_view: arcade.View) -> None:
+    def __init__(self, game: Game, play_view: arcade.View, flow: Navigator) -> None:
         super().__init__()
         self.game = game
         self.play_view = play_view
+        self.flow = flow
         theme = game.theme
         self.title = title("Paused", theme, 40)
         column = UIBoxLayout(vertical=True, space_between=10)
@@ -27,19 +28,14 @@ class PauseView(UIView):
         self.ui.add(anchor)
 
     def on_resume(self, _event=None) -> None:
-        self.window.show_view(self.play_view)
+        self.flow.resume(self.play_view)
 
     def on_restart(self, _event=None) -> None:
         self.play_view.restart_hole()
-        self.window.show_view(self.play_view)
+        self.flow.resume(self.play_view)
 
     def on_menu(self, _event=None) -> None:
-        from game.views.menu import MenuView
-
-        if self.play_view.world is not None:
-            self.play_view.world.close()
-        self.game.round = None
-        self.window.show_view(MenuView(self.game))
+        self.flow.menu()
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:
         if symbol == arcade.key.ESCAPE:

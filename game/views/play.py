@@ -10,12 +10,10 @@ from __future__ import annotations
 import math
 
 import arcade
-
-from engine.hole import HoleWorld
-from engine.presets import preset
-from engine.settings import MAX_SHOT_SPEED, SHOT_POWER
-from game.drawing import HUD_HEIGHT, BallArt, HoleArt, draw_arrow, fit_camera
-from game.session import Game, Round
+from polygolf.engine.golf.play import HolePlay
+from polygolf.game.drawing import HUD_HEIGHT, BallArt, HoleArt, draw_arrow, fit_camera
+from polygolf.game.session import Game, Round
+from polygolf.game.views.navigation import Navigator
 
 GRAB_SLACK = 1.25  # a press this many ball radii from the centre still grabs the ball
 FINISH_PAUSE = 1.0  # seconds between the ball dropping and the next screen
@@ -25,10 +23,11 @@ SMOOTHING = 0.1  # weight of the newest frame in the overlay's running averages
 
 
 class PlayView(arcade.View):
-    def __init__(self, game: Game, round_: Round) -> None:
+    def __init__(self, game: Game, round_: Round, flow: Navigator) -> None:
         super().__init__()
         self.game = game
         self.round = round_
+        self.flow = flow
         self.camera = arcade.Camera2D()
         theme = game.theme
         self.background_color = theme.rgba("background")
@@ -44,19 +43,17 @@ class PlayView(arcade.View):
         self.overlay_texts = [arcade.Text("", 0, 0, theme.rgba("text"), 12, font_name=("DejaVu Sans Mono", "monospace"))
                               for _ in range(OVERLAY_LINES)]
         self.system_us: dict[str, float] = {}
-        self.world: HoleWorld | None = None
+        self.world: HolePlay | None = None
         self.start_hole()
 
     # -- hole lifecycle ---------------------------------------------------------------------------
 
     def start_hole(self) -> None:
-        if self.world is not None:
-            self.world.close()
+        self.close()
         hole = self.round.current()
         if hole is None:
-            self.world = None
             return
-        self.world = HoleWorld(hole, self.game.shape, self.game.preset)
+        self.world = HolePlay(hole, self.game.shape, self.game.preset)
         self.hole_art = HoleArt(self.world.layout, self.game.theme)
         self.ball_art = BallArt(self.world.outline, self.game.theme)
         self.aiming = False
@@ -127,23 +124,14 @@ class PlayView(arcade.View):
             return
         self.aiming = False
         self.tip = self.to_world(x, y)
-        vector = (self.tip[0] - self.grab[0], self.tip[1] - self.grab[1])
-        if math.hypot(*vector) * SHOT_POWER < 0.05:
-            return  # a click, not a shot
-        full = MAX_SHOT_SPEED / SHOT_POWER
-        length = math.hypot(*vector)
-        if length > full:
-            vector = (vector[0] * full / length, vector[1] * full / length)
-        self.world.shoot(self.grab, vector)
+        self.world.shoot(self.grab, (self.tip[0] - self.grab[0], self.tip[1] - self.grab[1]))
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:
         if symbol == arcade.key.ESCAPE:
             if self.aiming:
                 self.aiming = False
             else:
-                from game.views.pause import PauseView
-
-                self.window.show_view(PauseView(self.game, self))
+                self.flow.pause(self)
         elif symbol == arcade.key.R:
             self.restart_hole()
         elif symbol == arcade.key.F3:
@@ -156,7 +144,7 @@ class PlayView(arcade.View):
         """Switch the accuracy preset live; the next holes keep it."""
         self.game.preset = name
         if self.world is not None:
-            self.world.set_knobs(preset(name))
+            self.world.set_preset(name)
         self.system_us.clear()
         self.show_banner(f"Preset: {name}", 2.0)
 
@@ -177,23 +165,23 @@ class PlayView(arcade.View):
             if self.finished_for >= FINISH_PAUSE:
                 self.finish_hole()
 
-    def step_profiled(self, world: HoleWorld) -> None:
+    def step_profiled(self, world: HolePlay) -> None:
         """One frame with every system timed; keeps running averages in µs per frame."""
-        before = dict(world.sim.metrics.system_seconds)
+        before = world.system_seconds()
         world.step(profile=True)
-        for name, total in world.sim.metrics.system_seconds.items():
+        for name, total in world.system_seconds().items():
             spent = (total - before.get(name, 0.0)) * 1e6
             old = self.system_us.get(name)
             self.system_us[name] = spent if old is None else old + SMOOTHING * (spent - old)
 
     def overlay_lines(self) -> list[str]:
         world = self.world
-        knobs = world.sim.ctx.knobs
-        names = world.sim.system_names
+        knobs = world.knobs
+        names = world.system_names
         total = sum(self.system_us.get(n, 0.0) for n in names)
-        lines = [f"preset {world.sim.preset_name}: {knobs.substeps} substeps x {knobs.iterations} iterations, "
+        lines = [f"preset {world.preset_name}: {knobs.substeps} substeps x {knobs.iterations} iterations, "
                  f"{knobs.position_correction}, ccd {'on' if knobs.ccd else 'off'}",
-                 f"physics {total:7.0f} us per frame   contacts {world.sim.ctx.contact_count}",
+                 f"physics {total:7.0f} us per frame   contacts {world.contact_count}",
                  ""]
         lines += [f"  {name:<12}{self.system_us.get(name, 0.0):7.0f} us" for name in names]
         lines += ["", "F3 hide   1 fast   2 balanced   3 accurate"]
@@ -213,15 +201,14 @@ class PlayView(arcade.View):
     def finish_hole(self) -> None:
         state = self.world.state
         result = self.round.finish_hole(state.score, state.picked_up)
-        self.world.close()
-        self.world = None
-        from game.views.between import BetweenView
-        from game.views.results import ResultsView
+        self.close()
+        self.flow.hole_done(result)
 
-        if self.round.over:
-            self.window.show_view(ResultsView(self.game, self.round))
-        else:
-            self.window.show_view(BetweenView(self.game, self.round, result))
+    def close(self) -> None:
+        """Let go of the hole's world (leaving the hole, or the game)."""
+        if self.world is not None:
+            self.world.close()
+            self.world = None
 
     def on_draw(self) -> None:
         self.clear()

@@ -4,15 +4,16 @@ from __future__ import annotations
 
 import arcade
 from arcade.gui import UIAnchorLayout, UIBoxLayout, UIView
-
-from game.session import Game, Round
-from game.views.widgets import themed_button, title
+from polygolf.game.session import Game, Round
+from polygolf.game.views.navigation import Navigator
+from polygolf.game.views.widgets import themed_button, title
 
 
 class ResultsView(UIView):
-    def __init__(self, game: Game, round_: Round) -> None:
+    def __init__(self, game: Game, round_: Round, flow: Navigator) -> None:
         super().__init__()
         self.game = game
+        self.flow = flow
         self.round = round_
         theme = game.theme
         self.background_color = theme.rgba("background")
@@ -47,15 +48,10 @@ class ResultsView(UIView):
         self.ui.add(anchor)
 
     def on_again(self, _event=None) -> None:
-        from game.views.play import PlayView
-
-        self.window.show_view(PlayView(self.game, self.game.start_round()))
+        self.flow.new_round()
 
     def on_menu(self, _event=None) -> None:
-        from game.views.menu import MenuView
-
-        self.game.round = None
-        self.window.show_view(MenuView(self.game))
+        self.flow.menu()
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:
         if symbol in (arcade.key.ENTER, arcade.key.RETURN, arcade.key.ESCAPE):

@@ -4,8 +4,7 @@ from __future__ import annotations
 
 import arcade
 from arcade.gui import UIFlatButton
-
-from engine.theme import Theme
+from polygolf.game.theme import Theme
 
 
 def button_style(theme: Theme, font_size: int = 16) -> dict[str, UIFlatButton.UIStyle]:

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 
-from engine.polygon import Vec
+from polygolf.engine.physics.polygon import Vec
 
 MAX_ITERATIONS = 24
 

@@ -8,9 +8,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import esper
-
-from engine.components import Body
-from engine.context import PhysicsContext
+from polygolf.engine.assembly.resources import Resources
+from polygolf.engine.components import Body
+from polygolf.engine.physics.presets import Knobs
 
 
 @dataclass(slots=True)
@@ -38,11 +38,11 @@ class Simulation:
     `close()` deletes it.
     """
 
-    def __init__(self, world: str, ctx: PhysicsContext, processors: Sequence[esper.Processor],
+    def __init__(self, world: str, res: Resources, processors: Sequence[esper.Processor],
                  names: dict[int, str], preset_name: str = "custom", reasons: dict[str, str] | None = None,
                  scene_name: str = "") -> None:
         self.world = world
-        self.ctx = ctx
+        self.res = res
         self.processors = list(processors)
         self.names = names
         self.preset_name = preset_name
@@ -66,7 +66,7 @@ class Simulation:
         `profile` times each processor (slower: it bypasses esper.process)."""
         esper.switch_world(self.world)
         metrics = self.metrics
-        substeps = self.ctx.knobs.substeps
+        substeps = self.res.config.knobs.substeps
         start = time.perf_counter()
         times = metrics.system_seconds
         for _ in range(frames):
@@ -100,9 +100,19 @@ class Simulation:
         metrics.final_energy = energy
         if energy > metrics.max_energy:
             metrics.max_energy = energy
-        if self.ctx.max_penetration > metrics.max_penetration:
-            metrics.max_penetration = self.ctx.max_penetration
-        self.ctx.max_penetration = 0.0
+        stats = self.res.stats
+        if stats.max_penetration > metrics.max_penetration:
+            metrics.max_penetration = stats.max_penetration
+        stats.max_penetration = 0.0
+
+    @property
+    def knobs(self) -> Knobs:
+        return self.res.config.knobs
+
+    def set_knobs(self, knobs: Knobs, preset_name: str) -> None:
+        """Switch the accuracy knobs live; the stages stay (every preset keeps continuous collision)."""
+        self.res.config.knobs = knobs
+        self.preset_name = preset_name
 
     # -- reading ----------------------------------------------------------------------------------
 
@@ -127,6 +137,7 @@ class Simulation:
         return {
             "scene": self.scene_name,
             "preset": self.preset_name,
+            "knobs": {"substeps": self.knobs.substeps, "iterations": self.knobs.iterations},
             "steps": m.frames,
             "systems": self.system_names,
             "bodies": [

@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from engine.polygon import PolygonError, Vec
+from polygolf.engine.physics.polygon import PolygonError, Vec
 
 
 @dataclass(frozen=True, slots=True)

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from engine.polygon import Vec
+from polygolf.engine.physics.polygon import Vec
 
 # Prefer polygon A's face unless B's is clearly better: stops the reference face flickering between
 # the two polygons when they are nearly parallel, which would spoil warm starting.

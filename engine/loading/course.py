@@ -8,19 +8,15 @@ first tile of a hole holds the tee, the last the cup, both placed at the tile's 
 
 from __future__ import annotations
 
-import os
-from collections import deque
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated, Literal
 
+from polygolf.engine.loading.paths import HOLES_DIR
+from polygolf.engine.loading.scene import Count, DragSpec, NonNegative, Number, Point, Positive, Strict_, WallSpec
+from polygolf.engine.loading.yamlsource import ContentError, Loc, format_loc, line_of, load_yaml, validate
 from pydantic import Field, Strict, model_validator
 
-from engine.scene import Count, DragSpec, NonNegative, Number, Point, Positive, Strict_, WallSpec
-from engine.yamlsource import ContentError, Loc, format_loc, line_of, load_yaml, validate
-
-CONTENT_DIR = Path(os.environ.get("POLYGOLF_CONTENT", Path(__file__).resolve().parent.parent / "content"))
-HOLES_DIR = CONTENT_DIR / "holes"
 SIDES = ("n", "e", "s", "w")
 STEP = {"n": (0, 1), "e": (1, 0), "s": (0, -1), "w": (-1, 0)}
 OPPOSITE = {"n": "s", "e": "w", "s": "n", "w": "e"}
@@ -129,7 +125,8 @@ class CoursesFile(Strict_):
 
 # --- loading ----------------------------------------------------------------------------------------
 
-def load_library(path: str | Path = HOLES_DIR / "tiles.yaml") -> TileLibrary:
+def load_library(path: str | Path | None = None) -> TileLibrary:
+    path = path or HOLES_DIR / "tiles.yaml"
     data, lines = load_yaml(path)
     library = validate(TileLibrary, data, lines, path)
     if "empty" not in library.patterns:
@@ -138,24 +135,24 @@ def load_library(path: str | Path = HOLES_DIR / "tiles.yaml") -> TileLibrary:
 
 
 @dataclass(slots=True)
-class Hole:
-    """A validated hole: its spec, where it came from and the library it uses."""
+class ParsedHole:
+    """A hole file checked against the library, with the lines its values came from."""
 
-    id: str
     path: Path
     spec: HoleSpec
-    library: TileLibrary
+    lines: dict[Loc, int]
+
+    def error(self, loc: Loc, message: str) -> ContentError:
+        return ContentError(self.path, line_of(loc, self.lines), format_loc(loc), message)
 
 
-def load_hole(path: str | Path, library: TileLibrary) -> Hole:
-    """Load a hole and check it against the library: names exist, tiles do not overlap, open sides
-    meet open sides, and the cup can be reached from the tee."""
+def parse_hole(path: str | Path, library: TileLibrary) -> ParsedHole:
+    """Load a hole file and check it against the library: names exist, tiles do not overlap, open
+    sides meet open sides. (Geometry — reachability, tee and cup — is golf's: `golf.holes`.)"""
     path = Path(path)
     data, lines = load_yaml(path)
-    spec = validate(HoleSpec, data, lines, path)
-
-    def fail(loc: Loc, message: str) -> ContentError:
-        return ContentError(path, line_of(loc, lines), format_loc(loc), message)
+    parsed = ParsedHole(path, validate(HoleSpec, data, lines, path), lines)
+    spec, fail = parsed.spec, parsed.error
 
     placed: dict[tuple[int, int], int] = {}
     for i, tile in enumerate(spec.tiles):
@@ -182,94 +179,4 @@ def load_hole(path: str | Path, library: TileLibrary) -> Hole:
             if theirs == "wall":
                 raise fail(("tiles", i, "borders"), f"side {side} is open but tiles[{j}] walls its side "
                                                     f"{OPPOSITE[side]}")
-
-    if len(spec.tiles) > 1 and not _reachable(spec, library):
-        raise fail(("tiles", len(spec.tiles) - 1), "the cup cannot be reached from the tee through open borders")
-    hole = Hole(id=path.stem, path=path, spec=spec, library=library)
-    _check_tee_and_cup(hole, fail)
-    return hole
-
-
-def _reachable(spec: HoleSpec, library: TileLibrary) -> bool:
-    index = {t.at: t for t in spec.tiles}
-    start, goal = spec.tiles[0].at, spec.tiles[-1].at
-    seen, queue = {start}, deque([start])
-    while queue:
-        at = queue.popleft()
-        if at == goal:
-            return True
-        borders = library.border_sets[index[at].borders]
-        for side in SIDES:
-            if getattr(borders, side) == "wall":
-                continue
-            nxt = (at[0] + STEP[side][0], at[1] + STEP[side][1])
-            if nxt in index and nxt not in seen:
-                seen.add(nxt)
-                queue.append(nxt)
-    return False
-
-
-def _check_tee_and_cup(hole: Hole, fail) -> None:
-    import math
-
-    from engine.hole import layout_hole, point_clearance
-    from engine.polygon import bounding_radius
-
-    layout = layout_hole(hole)
-    ball_r = hole.library.ball.radius
-    water = layout.zone_outlines("water")
-    for (x, y), what, i in ((layout.tee, "tee", 0), (layout.cup, "cup", len(hole.spec.tiles) - 1)):
-        need = ball_r if what == "tee" else hole.library.cup.radius
-        loc = ("tiles", i, "pattern")
-        if point_clearance(layout, x, y) < need:
-            raise fail(loc, f"the {what} at the tile's centre is blocked by an obstacle")
-        if water and point_clearance(layout, x, y, water) < need:
-            raise fail(loc, f"the {what} at the tile's centre is in or at the edge of water")
-        for outline, (px, py), _ in layout.windmills:
-            if math.hypot(x - px, y - py) < bounding_radius(outline) + need:
-                raise fail(loc, f"the {what} at the tile's centre is within a windmill's sweep")
-
-
-@dataclass(slots=True)
-class Course:
-    """A course as it will be played: its holes in order, each loaded or the error that broke it."""
-
-    id: str
-    name: str
-    holes: list[Hole | ContentError] = field(default_factory=list)
-
-    @property
-    def playable(self) -> list[Hole]:
-        return [h for h in self.holes if isinstance(h, Hole)]
-
-
-def load_courses(path: str | Path = HOLES_DIR / "courses.yaml", library: TileLibrary | None = None) -> list[Course]:
-    """Every course with its holes. A broken hole is kept as its ContentError so the rest of the
-    course plays; an unknown hole name is such an error too."""
-    path = Path(path)
-    library = library or load_library(path.parent / "tiles.yaml")
-    data, lines = load_yaml(path)
-    spec = validate(CoursesFile, data, lines, path)
-    courses = []
-    for c, course in enumerate(spec.courses):
-        loaded = Course(id=course.name.lower().replace(" ", "-"), name=course.name)
-        for h, hole_id in enumerate(course.holes):
-            hole_path = path.parent / f"{hole_id}.yaml"
-            if not hole_path.exists():
-                loc = ("courses", c, "holes", h)
-                loaded.holes.append(ContentError(path, line_of(loc, lines), format_loc(loc),
-                                                 f"no hole file {hole_path.name}"))
-                continue
-            try:
-                loaded.holes.append(load_hole(hole_path, library))
-            except ContentError as exc:
-                loaded.holes.append(exc)
-        courses.append(loaded)
-    return courses
-
-
-def find_course(courses: list[Course], name: str) -> Course:
-    for course in courses:
-        if name in (course.id, course.name):
-            return course
-    raise KeyError(f"no course {name!r}; courses: {', '.join(c.id for c in courses)}")
+    return parsed

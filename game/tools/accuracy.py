@@ -20,11 +20,18 @@ import csv
 import math
 import statistics
 from collections.abc import Callable, Iterable
+from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from engine import polygon
-from engine.presets import PRESETS, Knobs
+from polygolf.engine.golf.golfer import golfer_for
+from polygolf.engine.golf.holes import find_course, load_courses
+from polygolf.engine.golf.play import HolePlay
+from polygolf.engine.loading.paths import SCENES_DIR
+from polygolf.engine.loading.scene import ShapeSpec, build_scene, load_scene
+from polygolf.engine.physics import polygon
+from polygolf.engine.physics.presets import PRESETS, Knobs
+from polygolf.engine.physics.settings import LINEAR_SLOP
 
 REFERENCE = Knobs(substeps=32, iterations=30, position_iterations=6, ccd=True, position_correction="ngs")
 SUBSTEPS = (1, 2, 3, 4, 6, 8, 12, 16)
@@ -60,10 +67,8 @@ class Case:
 
 
 def _scene_case(name: str, seconds: float, exact=None, escaped=None) -> Case:
-    from engine.pipeline import build_scene
-    from engine.scene import load_scene
 
-    scene = load_scene(Path(__file__).resolve().parent.parent / "content" / "scenes" / f"{name}.yaml")
+    scene = load_scene(SCENES_DIR / f"{name}.yaml")
 
     def run(knobs: Knobs, measure: bool) -> Outcome:
         with build_scene(scene, knobs) as sim:
@@ -86,11 +91,8 @@ def pile_case(settle: float = 2.0, watch: float = 0.5) -> Case:
     """Twelve pentagons settling into a pile under gravity. No closed form and no single answer (a
     pile may settle many ways), so it is scored on what a settled pile must do: its overlaps stay
     near the linear slop (position correction) and it keeps still (solver convergence)."""
-    from engine.pipeline import build_scene
-    from engine.scene import load_scene
-    from engine.settings import LINEAR_SLOP
 
-    scene = load_scene(Path(__file__).resolve().parent.parent / "content" / "scenes" / "pile.yaml")
+    scene = load_scene(SCENES_DIR / "pile.yaml")
 
     def run(knobs: Knobs, measure: bool) -> Outcome:
         with build_scene(scene, knobs) as sim:
@@ -114,11 +116,8 @@ def pile_case(settle: float = 2.0, watch: float = 0.5) -> Case:
 
 def overlap_case(seconds: float = 0.5) -> Case:
     """A body starting 5 cm inside a wall: position correction must push it out, without speed."""
-    from engine.pipeline import build_scene
-    from engine.scene import load_scene
-    from engine.settings import LINEAR_SLOP
 
-    scene = load_scene(Path(__file__).resolve().parent.parent / "content" / "scenes" / "deep-overlap.yaml")
+    scene = load_scene(SCENES_DIR / "deep-overlap.yaml")
 
     def run(knobs: Knobs, measure: bool) -> Outcome:
         with build_scene(scene, knobs) as sim:
@@ -199,10 +198,6 @@ SHOTS = [
 
 def shot_cases(seconds: float = 4.0) -> list[Case]:
     """Real shots on real holes, followed until the ball rests (or `seconds` pass)."""
-    from engine.autoplay import golfer_for
-    from engine.course import find_course, load_courses
-    from engine.hole import HoleWorld
-    from engine.scene import ShapeSpec
 
     courses = load_courses()
     shape = ShapeSpec(regular=5, radius=1.0)
@@ -210,14 +205,12 @@ def shot_cases(seconds: float = 4.0) -> list[Case]:
     for course_name, number, shot in SHOTS:
         hole = find_course(courses, course_name).holes[number - 1]
         if shot is None:  # the scripted golfer's first shot, planned once
-            world = HoleWorld(hole, shape)
-            tee = world.layout.tee
-            origin, arrow = golfer_for(world).plan(tee)
-            world.close()
+            tee = hole.layout.tee
+            origin, arrow = golfer_for(hole).plan(tee)
             shot = ((origin[0] - tee[0], origin[1] - tee[1]), arrow)
 
         def run(knobs: Knobs, measure: bool, hole=hole, shot=shot) -> Outcome:
-            world = HoleWorld(hole, shape, knobs)
+            world = HolePlay(hole, shape, knobs)
             try:
                 tee = world.layout.tee
                 (ox, oy), arrow = shot
@@ -326,8 +319,6 @@ def measure(settings: list[Knobs], repeats: int = 3, workers: int = 2, quick: bo
             progress: bool = True) -> list[Row]:
     """Error and cost of every setting. Settings are spread over `workers` processes (one a core);
     each setting's runs, timed ones included, stay in one process."""
-    from concurrent.futures import ProcessPoolExecutor, as_completed
-
     rows = []
     with ProcessPoolExecutor(max_workers=workers, initializer=_prepare, initargs=(quick,)) as pool:
         futures = [pool.submit(_measure_one, knobs, repeats) for knobs in settings]
@@ -358,10 +349,6 @@ def mark_front(rows: list[Row]) -> None:
 def effect_costs(frames: int = 600) -> dict[str, float]:
     """µs per 60 Hz frame each system costs while the scripted golfer plays every hole of the real
     courses (profiled: each processor timed on its own)."""
-    from engine.autoplay import golfer_for
-    from engine.course import load_courses
-    from engine.hole import HoleWorld
-    from engine.scene import ShapeSpec
 
     totals: dict[str, float] = {}
     counted: dict[str, int] = {}
@@ -369,9 +356,9 @@ def effect_costs(frames: int = 600) -> dict[str, float]:
         if course.name not in ("Meadow", "Hazards"):
             continue
         for hole in course.playable:
-            world = HoleWorld(hole, ShapeSpec(regular=5, radius=1.0))
+            world = HolePlay(hole, ShapeSpec(regular=5, radius=1.0))
             try:
-                golfer = golfer_for(world)
+                golfer = golfer_for(hole)
                 for _ in range(frames):
                     if world.state.finished:
                         break

@@ -12,11 +12,13 @@ from __future__ import annotations
 import heapq
 import math
 
-from engine.components.hazards import Ice, Region, Sand
-from engine.hole import HoleLayout, HoleWorld
-from engine.polygon import Vec
-from engine.scene import DragSpec
-from engine.settings import MAX_SHOT_SPEED, SHOT_POWER
+from polygolf.engine.components.hazards import Ice, Region, Sand
+from polygolf.engine.golf.holes import Hole
+from polygolf.engine.golf.layout import HoleLayout, point_clearance
+from polygolf.engine.golf.play import HolePlay
+from polygolf.engine.loading.scene import DragSpec
+from polygolf.engine.physics.polygon import Vec
+from polygolf.engine.physics.settings import MAX_SHOT_SPEED, SHOT_POWER
 
 CUP_OVERSHOOT = 0.3  # m past the cup's centre: the ball is slow there, so it drops
 
@@ -93,8 +95,6 @@ class AutoGolfer:
                     self.links[j].append((i, d))
 
     def _free(self, p: Vec) -> bool:
-        from engine.hole import point_clearance
-
         return point_clearance(self.layout, *p, self.avoid) >= self.clearance * 1.3
 
     def clear(self, a: Vec, b: Vec) -> bool:
@@ -171,14 +171,14 @@ class AutoGolfer:
         return position, (ux * speed / SHOT_POWER, uy * speed / SHOT_POWER)
 
 
-def golfer_for(world: HoleWorld) -> AutoGolfer:
-    spec, lib = world.hole.spec, world.hole.library
-    return AutoGolfer(world.layout, lib.ball.radius, spec.green or lib.green)
+def golfer_for(hole: Hole) -> AutoGolfer:
+    spec, lib = hole.spec, hole.library
+    return AutoGolfer(hole.layout, lib.ball.radius, spec.green or lib.green)
 
 
-def play_hole(world: HoleWorld, max_frames: int = 60 * 120) -> int:
+def play_hole(world: HolePlay, max_frames: int = 60 * 120) -> int:
     """Play a hole to the end with planned shots; returns the frames it took."""
-    golfer = golfer_for(world)
+    golfer = golfer_for(world.hole)
     frames = 0
     while not world.state.finished and frames < max_frames:
         if world.ball_at_rest:

@@ -12,15 +12,58 @@ Per substep:
    impulse. With a converged compression phase the energy after impact can only fall:
    KE+ = KE_c + e²·W <= KE_c + W = KE- (W = ½PᵀAP, the energy the compression took).
 
-Normals point from body A to body B; a negative normal velocity is approach.
+`solve` runs steps 1-4 in that order for one substep, as box2d-lite's `Arbiter::PreStep` and
+`ApplyImpulse` do for its world; the restitution phase is its own stage. Normals point from body A to
+body B; a negative normal velocity is approach.
 """
 
 from __future__ import annotations
 
 import math
 
-from engine.contact import Manifold
-from engine.settings import BLOCK_MAX_CONDITION
+from polygolf.engine.physics.contact import Manifold
+from polygolf.engine.physics.presets import Knobs
+from polygolf.engine.physics.settings import BLOCK_MAX_CONDITION, LINEAR_SLOP, MAX_CORRECTION, POSITION_BETA
+
+
+def solve(manifolds: list[Manifold], knobs: Knobs, dt: float, friction: bool) -> bool:
+    """One substep's contact solve: velocities, then position error removed without touching them.
+    Returns True if the warm start was thrown away for a cold solve (see below)."""
+    prepare(manifolds)
+    cold_restart = False
+    if knobs.warm_start:
+        bodies = {id(b): b for m in manifolds for b in (m.body_a, m.body_b) if b.inv_mass > 0.0}.values()
+        saved = [(b, b.vx, b.vy, b.spin) for b in bodies]
+        before = sum(b.kinetic_energy() for b in bodies)
+        warm_start(manifolds)
+        _iterate(manifolds, knobs.iterations, friction)
+        if sum(b.kinetic_energy() for b in bodies) > before * (1.0 + 1e-12):
+            # A contact solve without restitution can only take energy away; a cold Gauss-Seidel
+            # sweep never adds any, but last substep's impulses re-applied to contacts that are
+            # now opening can. Fall back to the cold solve.
+            cold_restart = True
+            for b, vx, vy, spin in saved:
+                b.vx, b.vy, b.spin = vx, vy, spin
+            for m in manifolds:
+                for p in m.points:
+                    p.normal_impulse = p.tangent_impulse = 0.0
+            _iterate(manifolds, knobs.iterations, friction)
+    else:
+        _iterate(manifolds, knobs.iterations, friction)
+
+    if knobs.position_correction == "split":
+        for _ in range(knobs.position_iterations):
+            solve_split(manifolds, dt, POSITION_BETA, LINEAR_SLOP, MAX_CORRECTION)
+        apply_pushes(manifolds, dt)
+    elif knobs.position_correction == "ngs":
+        for _ in range(knobs.position_iterations):
+            solve_ngs(manifolds, POSITION_BETA, LINEAR_SLOP, MAX_CORRECTION)
+    return cold_restart
+
+
+def _iterate(manifolds: list[Manifold], iterations: int, friction: bool) -> None:
+    for _ in range(iterations):
+        solve_velocities(manifolds, friction)
 
 
 def prepare(manifolds: list[Manifold]) -> None:
@@ -169,7 +212,7 @@ def apply_restitution(manifolds: list[Manifold], threshold: float) -> int:
 # --- position correction -------------------------------------------------------------------------
 
 def _push_velocity(m: Manifold, rax: float, ray: float, rbx: float, rby: float) -> float:
-    a, b = m.body_a, m.body_b
+    a, b = m.body_a.scratch, m.body_b.scratch
     dvx = b.push_x - b.push_spin * rby - a.push_x + a.push_spin * ray
     dvy = b.push_y + b.push_spin * rbx - a.push_y - a.push_spin * rax
     return dvx * m.nx + dvy * m.ny
@@ -177,12 +220,13 @@ def _push_velocity(m: Manifold, rax: float, ray: float, rbx: float, rby: float) 
 
 def _apply_push(m: Manifold, px: float, py: float, rax: float, ray: float, rbx: float, rby: float) -> None:
     a, b = m.body_a, m.body_b
-    a.push_x -= a.inv_mass * px
-    a.push_y -= a.inv_mass * py
-    a.push_spin -= a.inv_inertia * (rax * py - ray * px)
-    b.push_x += b.inv_mass * px
-    b.push_y += b.inv_mass * py
-    b.push_spin += b.inv_inertia * (rbx * py - rby * px)
+    sa, sb = a.scratch, b.scratch
+    sa.push_x -= a.inv_mass * px
+    sa.push_y -= a.inv_mass * py
+    sa.push_spin -= a.inv_inertia * (rax * py - ray * px)
+    sb.push_x += b.inv_mass * px
+    sb.push_y += b.inv_mass * py
+    sb.push_spin += b.inv_inertia * (rbx * py - rby * px)
 
 
 def solve_split(manifolds: list[Manifold], dt: float, beta: float, slop: float, max_push: float) -> None:
@@ -216,6 +260,20 @@ def solve_split(manifolds: list[Manifold], dt: float, beta: float, slop: float, 
             lam = new - p.push_impulse
             p.push_impulse = new
             _apply_push(m, lam * nx, lam * ny, p.ra_x, p.ra_y, p.rb_x, p.rb_y)
+
+
+def apply_pushes(manifolds: list[Manifold], dt: float) -> None:
+    """Move every body by its split-impulse pseudo-velocity for dt, then forget it."""
+    moved = set()
+    for m in manifolds:
+        for body in (m.body_a, m.body_b):
+            if body.inv_mass > 0.0 and id(body) not in moved:
+                moved.add(id(body))
+                s = body.scratch
+                body.x += s.push_x * dt
+                body.y += s.push_y * dt
+                body.angle += s.push_spin * dt
+                s.push_x = s.push_y = s.push_spin = 0.0
 
 
 def solve_ngs(manifolds: list[Manifold], beta: float, slop: float, max_correction: float) -> float:

@@ -12,7 +12,25 @@ from __future__ import annotations
 
 import math
 
-from engine.settings import MAX_SHOT_SPEED, MAX_SHOT_SPIN, SHOT_POWER, SPIN_RATIO
+from polygolf.engine.physics.settings import MAX_SHOT_SPEED, MAX_SHOT_SPIN, SHOT_POWER, SPIN_RATIO
+
+MIN_SHOT_SPEED = 0.05  # m/s; a shorter arrow is a click, not a shot
+
+
+def clamp_arrow(arrow: tuple[float, float]) -> tuple[float, float] | None:
+    """The arrow a shot actually uses: no longer than the fastest shot's, or None for a click."""
+    length = math.hypot(*arrow)
+    if length * SHOT_POWER < MIN_SHOT_SPEED:
+        return None
+    full = MAX_SHOT_SPEED / SHOT_POWER
+    if length > full:
+        return arrow[0] * full / length, arrow[1] * full / length
+    return arrow
+
+
+def shot_power(arrow: tuple[float, float]) -> float:
+    """How strong a shot the arrow asks for: 0 to 1 (the fastest shot)."""
+    return min(1.0, math.hypot(*arrow) * SHOT_POWER / MAX_SHOT_SPEED)
 
 
 def shot_velocity(mass: float, inertia: float, radius: float, rx: float, ry: float, dx: float, dy: float,

@@ -11,9 +11,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from engine.collide import RawContact
-from engine.components.body import Body
-from engine.components.collider import Material
+from polygolf.engine.physics.body import Body, Material
+from polygolf.engine.physics.collide import RawContact, collide_polygons
+from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 
 # Normals closer than this (cosine) are the same contact plane.
 SAME_NORMAL_COS = math.cos(math.radians(2.0))
@@ -111,3 +111,59 @@ def group_by_normal(raw: list[tuple[float, float, ContactPoint]]) -> list[tuple[
         else:
             groups.append((nx, ny, [point]))
     return groups
+
+
+def combine(a: Material, b: Material) -> Material:
+    """Materials multiply (design notes): walls default to 1.0, so the ball's own values rule."""
+    return Material(restitution=a.restitution * b.restitution, friction=a.friction * b.friction)
+
+
+Carried = dict[tuple, tuple[float, float]]
+
+
+def persistent_impulses(manifolds: list[Manifold]) -> Carried:
+    """Last substep's impulses of points that were resting, keyed by (entity a, entity b, point key).
+
+    Only persistent contacts are warm-started: an impact's impulse belongs to that impact, and
+    re-applying it to a contact that is now opening would add energy."""
+    carried: Carried = {}
+    for m in manifolds:
+        for p in m.points:
+            if (p.normal_impulse or p.tangent_impulse) and p.approach_speed >= -RESTITUTION_THRESHOLD:
+                carried[(m.entity_a, m.entity_b, p.key)] = (p.normal_impulse, p.tangent_impulse)
+    return carried
+
+
+def collide_pieces(pieces_a, normals_a, pieces_b, normals_b, margin: float, body_a: Body, body_b: Body,
+                   material: Material, ngs: bool, key) -> list[tuple[float, float, ContactPoint]]:
+    """(normal, point) for every pair of convex pieces within `margin`; `key(i, j, feature)` names a
+    point so it can be matched in the next substep."""
+    raw: list[tuple[float, float, ContactPoint]] = []
+    for i in range(len(pieces_a)):
+        for j in range(len(pieces_b)):
+            hit = collide_polygons(pieces_a[i], normals_a[i], pieces_b[j], normals_b[j], margin)
+            if hit is None:
+                continue
+            normal, contacts = hit
+            for rc in contacts:
+                raw.append((normal[0], normal[1],
+                            make_point(rc, normal, key(i, j, rc.feature), body_a, body_b, material, ngs)))
+    return raw
+
+
+def add_manifolds(out: list[Manifold], raw: list[tuple[float, float, ContactPoint]], entity_a: int, entity_b: int,
+                  body_a: Body, body_b: Body, carried: Carried) -> float:
+    """Group the points between two bodies into one manifold per normal (at most two points each),
+    carry over the impulses of persisting points, append to `out`; returns the deepest overlap."""
+    deepest = 0.0
+    for nx, ny, points in group_by_normal(raw):
+        points = reduce_points(points, nx, ny)
+        for p in points:
+            if -p.separation > deepest:
+                deepest = -p.separation
+            previous = carried.get((entity_a, entity_b, p.key))
+            if previous is not None:
+                p.normal_impulse, p.tangent_impulse = previous
+        out.append(Manifold(entity_a=entity_a, entity_b=entity_b, body_a=body_a, body_b=body_b, nx=nx, ny=ny,
+                            points=points))
+    return deepest

@@ -5,13 +5,11 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Annotated
 
+from polygolf.engine.loading.paths import THEMES_DIR
+from polygolf.engine.loading.scene import Strict_
+from polygolf.engine.loading.yamlsource import load
 from pydantic import StringConstraints
 
-from engine.course import CONTENT_DIR
-from engine.scene import Strict_
-from engine.yamlsource import load
-
-THEMES_DIR = CONTENT_DIR / "themes"
 Colour = Annotated[str, StringConstraints(pattern=r"^#([0-9a-fA-F]{6}|[0-9a-fA-F]{8})$")]
 RGBA = tuple[int, int, int, int]
 

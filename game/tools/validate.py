@@ -5,10 +5,12 @@ from __future__ import annotations
 from collections.abc import Iterable
 from pathlib import Path
 
-from engine.course import CONTENT_DIR, load_courses, load_hole, load_library
-from engine.scene import load_scene
-from engine.theme import load_theme
-from engine.yamlsource import ContentError, load_yaml
+from polygolf.engine.golf.holes import load_courses, load_hole
+from polygolf.engine.loading.course import load_library
+from polygolf.engine.loading.paths import CONTENT_DIR
+from polygolf.engine.loading.scene import load_scene
+from polygolf.engine.loading.yamlsource import ContentError, load_yaml
+from polygolf.game.theme import load_theme
 
 
 def _library_for(path: Path):

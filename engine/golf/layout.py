@@ -1,4 +1,5 @@
-"""A hole, built: tile layout -> wall geometry -> an esper world with the ball, the cup and the rules."""
+"""A hole's geometry from its tiles: walls, obstacles and hazards in metres, the tee, the cup, and the
+way through the tiles. Computed once per hole (`golf.holes.Hole.layout`) and kept."""
 
 from __future__ import annotations
 
@@ -6,38 +7,9 @@ import math
 from collections import defaultdict, deque
 from dataclasses import dataclass, field
 
-import esper
-
-from engine import polygon
-from engine.components import (
-    Ball,
-    Body,
-    Bumper,
-    Collider,
-    Cup,
-    Drag,
-    HoleState,
-    Ice,
-    Material,
-    Name,
-    Region,
-    Sand,
-    ShotInput,
-    Slope,
-    Water,
-    Windmill,
-)
-from engine.context import PhysicsContext
-from engine.course import OPPOSITE, SIDES, STEP, Gate, Hole
-from engine.grid import SpatialGrid
-from engine.pipeline import make_body, make_collider, make_wall, new_world, processors_for
-from engine.presets import Knobs, preset
-from engine.settings import FRAME_DT, MAX_SHOT_SPEED
-from engine.simulation import Simulation
-from engine.systems.cup import CupProcessor
-from engine.systems.launch import LaunchProcessor
-from engine.systems.scoring import ScoringProcessor
-from engine.systems.shot import ShotProcessor
+from polygolf.engine.components import Material
+from polygolf.engine.loading.course import OPPOSITE, SIDES, STEP, Gate, HoleSpec, TileLibrary
+from polygolf.engine.physics import polygon
 
 Rect = tuple[float, float, float, float]
 
@@ -91,8 +63,7 @@ def _narrower(a, b):
     return a if isinstance(a, Gate) else b
 
 
-def layout_hole(hole: Hole) -> HoleLayout:
-    lib, spec = hole.library, hole.spec
+def layout_hole(spec: HoleSpec, lib: TileLibrary) -> HoleLayout:
     size, thick = lib.tile_size, lib.wall_thickness
     placed = {t.at: t for t in spec.tiles}
     floor = [(c * size, r * size, (c + 1) * size, (r + 1) * size) for c, r in (t.at for t in spec.tiles)]
@@ -157,7 +128,7 @@ def layout_hole(hole: Hole) -> HoleLayout:
     cup = ((last[0] + 0.5) * size, (last[1] + 0.5) * size)
     layout = HoleLayout(tile_size=size, floor=floor, borders=borders, obstacles=obstacles, tee=tee, cup=cup,
                         cup_radius=lib.cup.radius, bumpers=bumpers, zones=zones, windmills=windmills)
-    layout.route = _route(hole, tee, cup)
+    layout.route = _route(spec, lib, tee, cup)
     return layout
 
 
@@ -175,10 +146,11 @@ def _on_grid(value: float, size: float) -> bool:
     return abs(value / size - round(value / size)) < 1e-9
 
 
-def _route(hole: Hole, tee: tuple[float, float], cup: tuple[float, float]) -> list[tuple[float, float]]:
-    """Shortest way through the tiles: tee, then each opening crossed and tile centre, then cup."""
-    lib, spec = hole.library, hole.spec
-    size = lib.tile_size
+TileStep = tuple[tuple[int, int], str, tuple[int, int]]  # (tile, side crossed, next tile)
+
+
+def tile_path(spec: HoleSpec, lib: TileLibrary) -> list[TileStep] | None:
+    """Fewest tiles from the tee's to the cup's through open borders (breadth first), or None."""
     index = {t.at: t for t in spec.tiles}
     start, goal = spec.tiles[0].at, spec.tiles[-1].at
     came: dict[tuple[int, int], tuple[tuple[int, int], str] | None] = {start: None}
@@ -195,15 +167,25 @@ def _route(hole: Hole, tee: tuple[float, float], cup: tuple[float, float]) -> li
                 came[nxt] = (at, side)
                 queue.append(nxt)
     if goal not in came:
-        return [tee, cup]
-    steps = []
+        return None
+    steps: list[TileStep] = []
     at = goal
     while came[at] is not None:
         prev, side = came[at]
         steps.append((prev, side, at))
         at = prev
+    return steps[::-1]
+
+
+def _route(spec: HoleSpec, lib: TileLibrary, tee: tuple[float, float],
+           cup: tuple[float, float]) -> list[tuple[float, float]]:
+    """The way through the tiles: tee, then each opening crossed and tile centre, then cup."""
+    steps = tile_path(spec, lib)
+    if steps is None:
+        return [tee, cup]
+    size = lib.tile_size
     points = [tee]
-    for prev, side, nxt in reversed(steps):
+    for prev, side, nxt in steps:
         dx, dy = STEP[side]
         points.append(((prev[0] + 0.5 + 0.5 * dx) * size, (prev[1] + 0.5 + 0.5 * dy) * size))  # the opening
         points.append(((nxt[0] + 0.5) * size, (nxt[1] + 0.5) * size))
@@ -231,127 +213,3 @@ def ball_outline(shape, radius: float) -> polygon.Outline:
     outline = shape.outline()
     scale = radius / polygon.bounding_radius(outline)
     return tuple((x * scale, y * scale) for x, y in outline)
-
-
-def hole_effects(hole: Hole, layout: HoleLayout | None = None) -> dict[str, str]:
-    """Effect -> why the hole needs it. The game's own (shot, cup, scoring) are always there; the
-    rest are the hole's `effects` list if it has one, else what its content needs."""
-    lib, spec = hole.library, hole.spec
-    layout = layout or layout_hole(hole)
-    green = spec.green or lib.green
-    reasons = {"shot": "the player shoots", "cup": "the ball can drop into the cup",
-               "scoring": f"par {spec.par}, picked up after {spec.max_strokes or lib.max_strokes} strokes"}
-    derived: dict[str, str] = {}
-    if green.any:
-        derived["drag"] = f"the green slows the ball (linear {green.linear:g}/s, rolling {green.rolling:g} m/s²)"
-    derived["spin"] = "a contact off the centre of mass turns a polygon"
-    walls = [Material()] + [m for _, m in layout.obstacles] + [m for _, m, _ in layout.bumpers]
-    best_e = max(lib.ball.restitution * m.restitution for m in walls)
-    if best_e > 0:
-        derived["restitution"] = (f"ball restitution {lib.ball.restitution:g} x walls up to "
-                                  f"{best_e / lib.ball.restitution:g}")
-    best_f = max(lib.ball.friction * m.friction for m in walls)
-    if best_f > 0:
-        derived["friction"] = f"ball friction {lib.ball.friction:g} x walls up to {best_f / lib.ball.friction:g}"
-    derived["ccd"] = (f"a shot moves up to {MAX_SHOT_SPEED * FRAME_DT / 4:.2g} m a substep; "
-                      f"walls are {lib.wall_thickness:g} m thick")
-    counts = {kind: sum(1 for k, _, _ in layout.zones if k == kind) for kind in ("sand", "water", "ice", "slope")}
-    words = {"sand": "bunker", "water": "pond", "ice": "ice sheet", "slope": "slope"}
-    for kind, count in counts.items():
-        if count:
-            derived[kind] = f"{count} {words[kind]}{'s' if count > 1 else ''}"
-    if layout.bumpers:
-        derived["bumper"] = f"{len(layout.bumpers)} bumper{'s' if len(layout.bumpers) > 1 else ''}"
-    if layout.windmills:
-        derived["windmill"] = f"{len(layout.windmills)} windmill{'s' if len(layout.windmills) > 1 else ''}"
-    if spec.launch is not None:
-        derived["launch"] = f"collision test: the ball is launched every {spec.launch.every:g} s"
-    if spec.effects is not None:
-        derived = {e: "listed by the hole" + (f" ({derived[e]})" if e in derived else "") for e in spec.effects}
-    return {**reasons, **derived}
-
-
-class HoleWorld:
-    """One hole being played: an esper world holding the ball, walls, hazards, cup and the hole's
-    state, with only the processors the hole needs. The front end writes `shoot()` and reads the rest."""
-
-    def __init__(self, hole: Hole, shape, knobs: Knobs | str = "balanced") -> None:
-        lib, spec = hole.library, hole.spec
-        knobs = preset(knobs) if isinstance(knobs, str) else knobs
-        self.hole = hole
-        self.layout = layout = layout_hole(hole)
-        self.reasons = hole_effects(hole, layout)
-        rotates = "spin" in self.reasons
-
-        world = new_world(f"hole-{hole.id}")
-        self.outline = ball_outline(shape, lib.ball.radius)
-        self.ball = make_body(self.outline, layout.tee, lib.ball.density, rotates=rotates)
-        self.ball.asleep = spec.launch is None
-        self.collider: Collider = make_collider(self.outline, Material(lib.ball.restitution, lib.ball.friction))
-        self.shot = ShotInput()
-        green = spec.green or lib.green
-        components: list[object] = [self.ball, self.collider, Ball(*layout.tee), self.shot, Name("ball")]
-        if green.any:
-            components.append(Drag(**green.model_dump()))
-        self.ball_entity = esper.create_entity(*components)
-        self.cup = Cup(layout.cup[0], layout.cup[1], lib.cup.radius, lib.cup.max_speed)
-        esper.create_entity(self.cup)
-        self.state = HoleState(par=spec.par, max_strokes=spec.max_strokes or lib.max_strokes)
-        esper.create_entity(self.state)
-
-        grid = SpatialGrid(lib.tile_size / 2.0)
-        self.bumpers: list[Bumper] = []
-        solids = [(b, Material(), None) for b in layout.borders] + [(o, m, None) for o, m in layout.obstacles]
-        solids += layout.bumpers
-        for outline, material, kick in solids:
-            wall = make_wall(outline, material)
-            parts: list[object] = [wall]
-            if kick is not None:
-                self.bumpers.append(Bumper(kick))
-                parts.append(self.bumpers[-1])
-            ent = esper.create_entity(*parts)
-            for k, box in enumerate(wall.piece_aabbs):
-                grid.insert((ent, k), box)
-        marker = {"sand": Sand, "ice": Ice, "water": Water}
-        for kind, outline, push in layout.zones:
-            xs, ys = zip(*outline)
-            region = Region(outline, (min(xs), min(ys), max(xs), max(ys)))
-            esper.create_entity(region, Slope(push) if kind == "slope" else marker[kind]())
-        self.windmills: list[Body] = []
-        for outline, pivot, speed in layout.windmills:
-            body = Body(x=pivot[0], y=pivot[1], spin=speed)  # kinematic: no inverse mass or inertia
-            self.windmills.append(body)
-            esper.create_entity(body, make_collider(outline, Material()), Windmill(speed), Name("windmill"))
-
-        ctx = PhysicsContext(knobs=knobs, effects=frozenset(self.reasons), static_grid=grid)
-        procs: list[esper.Processor] = [ShotProcessor(ctx)]
-        if "launch" in self.reasons and spec.launch is not None:
-            procs.append(LaunchProcessor(ctx, spec.launch.velocity, spec.launch.every, layout.tee))
-        procs += processors_for(ctx, self.reasons, contacts=True, has_walls=True, cell_size=lib.tile_size / 2.0)
-        procs += [CupProcessor(ctx), ScoringProcessor(ctx)]
-        self.sim = Simulation(world, ctx, procs, {self.ball_entity: "ball"}, preset_name=knobs_name(knobs),
-                              reasons=self.reasons, scene_name=hole.id)
-
-    # The front end's verbs.
-    def shoot(self, origin: tuple[float, float], vector: tuple[float, float]) -> None:
-        self.shot.request(origin, vector)
-
-    @property
-    def ball_at_rest(self) -> bool:
-        return self.ball.asleep
-
-    def step(self, frames: int = 1, profile: bool = False) -> None:
-        self.sim.step(frames, measure=False, profile=profile)
-
-    def set_knobs(self, knobs: Knobs) -> None:
-        self.sim.ctx.knobs = knobs
-        self.sim.preset_name = knobs_name(knobs)
-
-    def close(self) -> None:
-        self.sim.close()
-
-
-def knobs_name(knobs: Knobs) -> str:
-    from engine.presets import PRESETS
-
-    return next((name for name, k in PRESETS.items() if k == knobs), "custom")

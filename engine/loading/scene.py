@@ -10,11 +10,14 @@ import math
 from pathlib import Path
 from typing import Annotated, Literal
 
+from polygolf.engine.assembly.assemble import assemble
+from polygolf.engine.assembly.simulation import Simulation
+from polygolf.engine.assembly.spec import DynamicPart, WallPart, WorldSpec
+from polygolf.engine.components import Drag, Material
+from polygolf.engine.loading.yamlsource import load
+from polygolf.engine.physics import polygon
+from polygolf.engine.physics.presets import PRESETS, Knobs
 from pydantic import BaseModel, ConfigDict, Field, Strict, model_validator
-
-from engine import polygon
-from engine.presets import PRESETS
-from engine.yamlsource import load
 
 Number = Annotated[float, Strict()]
 Positive = Annotated[float, Strict(), Field(gt=0)]
@@ -154,3 +157,20 @@ class Scene(Strict_):
 def load_scene(path: str | Path) -> Scene:
     """Load and validate a scene; raises ContentError with file, line and field."""
     return load(Scene, path)
+
+
+def scene_spec(scene: Scene) -> WorldSpec:
+    """The world spec of a scene: its bodies, walls and gravity, its preset and effect list."""
+    bodies = [DynamicPart(name=b.name, outline=b.shape.outline(), position=b.position, density=b.density,
+                          material=Material(b.restitution, b.friction), angle=math.radians(b.angle),
+                          velocity=b.velocity, spin=b.spin, drag=Drag(**b.drag.model_dump()) if b.drag.any else None)
+              for b in scene.bodies]
+    walls = [WallPart(tuple(w.outline()), Material(w.restitution, w.friction)) for w in scene.walls]
+    listed = tuple(e for e in EFFECTS if e in scene.effects) if scene.effects is not None else None
+    return WorldSpec(name=scene.name, bodies=bodies, walls=walls, gravity=scene.gravity, listed=listed,
+                     listed_by="the scene", preset=scene.preset)
+
+
+def build_scene(scene: Scene, knobs: Knobs | str | None = None) -> Simulation:
+    """A ready-to-step simulation of a scene; `knobs` defaults to the scene's preset, then balanced."""
+    return assemble(scene_spec(scene), knobs)

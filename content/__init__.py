@@ -1,0 +1,1 @@
+"""Shipped content (YAML): holes, courses, tile library, themes, scenes. Package data."""

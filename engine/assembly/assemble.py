@@ -1,0 +1,108 @@
+"""The one assembler: a world spec and the accuracy knobs -> an esper world holding the spec's
+entities and only the stages (from the one stage table) that its effects call for."""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Iterable, Sequence
+
+import esper
+from polygolf.engine.assembly.effects import effects_for
+from polygolf.engine.assembly.resources import Resources, StaticWorld, StepConfig
+from polygolf.engine.assembly.simulation import Simulation
+from polygolf.engine.assembly.spec import WorldSpec
+from polygolf.engine.assembly.stages import stages_for
+from polygolf.engine.components import Body, Collider, Material, Name, Wall
+from polygolf.engine.physics import polygon
+from polygolf.engine.physics.grid import SpatialGrid
+from polygolf.engine.physics.mass import mass_properties
+from polygolf.engine.physics.presets import DEFAULT_PRESET, PRESETS, Knobs, preset
+
+_world_ids = itertools.count(1)
+
+
+def make_collider(outline: polygon.Outline, material: Material) -> Collider:
+    """Collider of a normalised outline (CCW, centroid at the origin)."""
+    pieces = tuple(polygon.convex_pieces(outline))
+    return Collider(
+        outline=tuple(outline), pieces=pieces,
+        normals=tuple(polygon.edge_normals(p) for p in pieces),
+        radius=polygon.bounding_radius(outline), material=material,
+        piece_reach=tuple(polygon.bounding_radius(p) for p in pieces),
+    )
+
+
+def make_body(outline: polygon.Outline, position: Sequence[float], density: float, angle: float = 0.0,
+              velocity: Sequence[float] = (0.0, 0.0), spin: float = 0.0, rotates: bool = True) -> Body:
+    """Dynamic body with the exact mass and inertia of its outline. `rotates=False` (no `spin`
+    effect) gives infinite inertia: contacts then cannot turn it."""
+    props = mass_properties(outline, density)
+    body = Body.dynamic(float(position[0]), float(position[1]), props.mass, props.inertia,
+                        angle=angle, vx=float(velocity[0]), vy=float(velocity[1]), spin=spin if rotates else 0.0)
+    if not rotates:
+        body.inv_inertia = 0.0
+    return body
+
+
+def make_wall(outline: Sequence[polygon.Vec], material: Material) -> Wall:
+    """Static wall from a world-space CCW outline."""
+    outline = tuple(outline)
+    pieces = tuple(polygon.convex_pieces(outline))
+
+    def box(points: Iterable[polygon.Vec]) -> tuple[float, float, float, float]:
+        xs, ys = zip(*points)
+        return min(xs), min(ys), max(xs), max(ys)
+
+    return Wall(outline=outline, pieces=pieces, normals=tuple(polygon.edge_normals(p) for p in pieces),
+                material=material, piece_aabbs=tuple(box(p) for p in pieces))
+
+
+def resolve_knobs(knobs: Knobs | str | None, default: str | None = None) -> tuple[str, Knobs]:
+    """(preset name, knobs): a preset by name, the given knobs ("custom" unless they are a preset's),
+    or `default`, then balanced."""
+    if knobs is None or isinstance(knobs, str):
+        name = knobs or default or DEFAULT_PRESET
+        return name, preset(name)
+    return preset_name(knobs), knobs
+
+
+def preset_name(knobs: Knobs) -> str:
+    return next((name for name, k in PRESETS.items() if k == knobs), "custom")
+
+
+def assemble(spec: WorldSpec, knobs: Knobs | str | None = None) -> Simulation:
+    """A ready-to-step simulation of `spec`. `knobs` defaults to the spec's preset, then balanced."""
+    name, knobs = resolve_knobs(knobs, spec.preset)
+    effects = effects_for(spec, knobs.substeps)
+    rotates = "spin" in effects
+
+    world = f"{spec.name}-{next(_world_ids)}"
+    esper.switch_world(world)
+    names: dict[int, str] = {}
+    radius = 0.0
+    for part in spec.bodies:
+        body = make_body(part.outline, part.position, part.density, part.angle, part.velocity, part.spin, rotates)
+        body.asleep = part.asleep
+        collider = make_collider(part.outline, part.material)
+        radius = max(radius, collider.radius)
+        components: list[object] = [body, collider, Name(part.name), *part.extras]
+        if part.drag is not None:
+            components.append(part.drag)
+        names[esper.create_entity(*components)] = part.name
+    for components in spec.entities:
+        esper.create_entity(*components)
+
+    grid = SpatialGrid(spec.cell_size or max(1.0, 4.0 * radius))
+    for part in spec.walls:
+        wall = make_wall(part.outline, part.material)
+        ent = esper.create_entity(wall, *part.extras)
+        for k, box in enumerate(wall.piece_aabbs):
+            grid.insert((ent, k), box)
+    for part in spec.kinematic:
+        body = Body(x=part.position[0], y=part.position[1], spin=part.spin)  # no inverse mass or inertia
+        esper.create_entity(body, make_collider(part.outline, part.material), Name(part.name), *part.extras)
+
+    res = Resources(config=StepConfig(knobs=knobs, effects=frozenset(effects), gravity=tuple(spec.gravity)),
+                    statics=StaticWorld(grid))
+    processors = [stage.processor(res) for stage in stages_for(effects, spec, knobs)]
+    return Simulation(world, res, processors, names, preset_name=name, reasons=effects, scene_name=spec.name)

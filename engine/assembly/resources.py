@@ -1,0 +1,88 @@
+"""A simulation's resources (Bevy's word): state that belongs to the world, not to an entity, split
+by who writes it, so a processor's constructor shows what it reads and writes."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from polygolf.engine.physics.body import Body
+from polygolf.engine.physics.contact import Carried, Manifold, persistent_impulses
+from polygolf.engine.physics.grid import SpatialGrid
+from polygolf.engine.physics.presets import Knobs
+from polygolf.engine.physics.settings import FRAME_DT
+
+
+@dataclass(slots=True)
+class StepConfig:
+    """Set when the world is built (knobs may be switched live); read by every stage."""
+
+    knobs: Knobs
+    effects: frozenset[str]
+    gravity: tuple[float, float] = (0.0, 0.0)  # m/s²
+
+    @property
+    def dt(self) -> float:
+        return FRAME_DT / self.knobs.substeps
+
+
+@dataclass(slots=True)
+class StaticWorld:
+    """The walls' index, filed once at assembly; and the stand-in body a wall contact pushes against."""
+
+    grid: SpatialGrid
+    body: Body = field(default_factory=lambda: Body(x=0.0, y=0.0))
+
+
+@dataclass(slots=True)
+class Candidates:
+    """Broadphase -> narrowphase: body entity -> (wall entity, piece) pairs, and body pairs."""
+
+    walls: dict[int, list[tuple[int, int]]] = field(default_factory=dict)
+    pairs: list[tuple[int, int]] = field(default_factory=list)
+
+
+@dataclass(slots=True)
+class Contacts:
+    """Narrowphase -> resolve, restitution, bumper and rest detection: this substep's manifolds."""
+
+    manifolds: list[Manifold] = field(default_factory=list)
+    touching: set[int] = field(default_factory=set)  # entities in this substep's manifolds
+
+    def carried(self) -> Carried:
+        """What the last substep leaves for warm starting (see `contact.persistent_impulses`)."""
+        return persistent_impulses(self.manifolds)
+
+    @property
+    def count(self) -> int:
+        return sum(len(m.points) for m in self.manifolds)
+
+
+@dataclass(slots=True)
+class Stats:
+    """Measurements the stages add to; whoever reads one resets it."""
+
+    max_penetration: float = 0.0
+    bounces: int = 0
+    toi_hits: int = 0
+    cold_restarts: int = 0  # substeps whose warm start would have added energy
+
+
+@dataclass(slots=True)
+class Events:
+    """Golf events of this substep, in the order they happened: ("shot", entity), ("holed", entity),
+    ("penalty", strokes). The scoring stage, last in the table, reads them and clears the list."""
+
+    fired: list[tuple[str, int]] = field(default_factory=list)
+
+    def emit(self, kind: str, value: int) -> None:
+        self.fired.append((kind, value))
+
+
+@dataclass(slots=True)
+class Resources:
+    config: StepConfig
+    statics: StaticWorld
+    candidates: Candidates = field(default_factory=Candidates)
+    contacts: Contacts = field(default_factory=Contacts)
+    stats: Stats = field(default_factory=Stats)
+    events: Events = field(default_factory=Events)

@@ -1,0 +1,98 @@
+"""Holes and courses as the game plays them: a hole file parsed, its geometry laid out once and
+checked (reachable cup, clear tee and cup), and courses of such holes with broken ones kept as errors."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from polygolf.engine.golf.layout import HoleLayout, layout_hole, point_clearance, tile_path
+from polygolf.engine.loading.course import CoursesFile, HoleSpec, ParsedHole, TileLibrary, load_library, parse_hole
+from polygolf.engine.loading.paths import HOLES_DIR
+from polygolf.engine.loading.yamlsource import ContentError, format_loc, line_of, load_yaml, validate
+from polygolf.engine.physics.polygon import bounding_radius
+
+
+@dataclass(slots=True)
+class Hole:
+    """A validated hole: its spec, where it came from, the library it uses and its layout."""
+
+    id: str
+    path: Path
+    spec: HoleSpec
+    library: TileLibrary
+    layout: HoleLayout
+
+
+def load_hole(path: str | Path, library: TileLibrary) -> Hole:
+    """Load a hole, lay it out and check it: the cup can be reached from the tee through open
+    borders, and neither the tee nor the cup is blocked, in water or in a windmill's sweep."""
+    parsed = parse_hole(path, library)
+    spec = parsed.spec
+    if len(spec.tiles) > 1 and tile_path(spec, library) is None:
+        raise parsed.error(("tiles", len(spec.tiles) - 1),
+                           "the cup cannot be reached from the tee through open borders")
+    layout = layout_hole(spec, library)
+    _check_tee_and_cup(parsed, layout, library)
+    return Hole(id=parsed.path.stem, path=parsed.path, spec=spec, library=library, layout=layout)
+
+
+def _check_tee_and_cup(parsed: ParsedHole, layout: HoleLayout, library: TileLibrary) -> None:
+    water = layout.zone_outlines("water")
+    last = len(parsed.spec.tiles) - 1
+    for (x, y), what, i in ((layout.tee, "tee", 0), (layout.cup, "cup", last)):
+        need = library.ball.radius if what == "tee" else library.cup.radius
+        loc = ("tiles", i, "pattern")
+        if point_clearance(layout, x, y) < need:
+            raise parsed.error(loc, f"the {what} at the tile's centre is blocked by an obstacle")
+        if water and point_clearance(layout, x, y, water) < need:
+            raise parsed.error(loc, f"the {what} at the tile's centre is in or at the edge of water")
+        for outline, (px, py), _ in layout.windmills:
+            if math.hypot(x - px, y - py) < bounding_radius(outline) + need:
+                raise parsed.error(loc, f"the {what} at the tile's centre is within a windmill's sweep")
+
+
+@dataclass(slots=True)
+class Course:
+    """A course as it will be played: its holes in order, each loaded or the error that broke it."""
+
+    id: str
+    name: str
+    holes: list[Hole | ContentError] = field(default_factory=list)
+
+    @property
+    def playable(self) -> list[Hole]:
+        return [h for h in self.holes if isinstance(h, Hole)]
+
+
+def load_courses(path: str | Path | None = None, library: TileLibrary | None = None) -> list[Course]:
+    """Every course with its holes. A broken hole is kept as its ContentError so the rest of the
+    course plays; an unknown hole name is such an error too."""
+    path = Path(path or HOLES_DIR / "courses.yaml")
+    library = library or load_library(path.parent / "tiles.yaml")
+    data, lines = load_yaml(path)
+    spec = validate(CoursesFile, data, lines, path)
+    courses = []
+    for c, course in enumerate(spec.courses):
+        loaded = Course(id=course.name.lower().replace(" ", "-"), name=course.name)
+        for h, hole_id in enumerate(course.holes):
+            hole_path = path.parent / f"{hole_id}.yaml"
+            if not hole_path.exists():
+                loc = ("courses", c, "holes", h)
+                loaded.holes.append(ContentError(path, line_of(loc, lines), format_loc(loc),
+                                                 f"no hole file {hole_path.name}"))
+                continue
+            try:
+                loaded.holes.append(load_hole(hole_path, library))
+            except ContentError as exc:
+                loaded.holes.append(exc)
+        courses.append(loaded)
+    return courses
+
+
+def find_course(courses: list[Course], name: str) -> Course:
+    for course in courses:
+        if name in (course.id, course.name):
+            return course
+    raise KeyError(f"no course {name!r}; courses: {', '.join(c.id for c in courses)}")

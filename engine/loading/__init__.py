@@ -1,0 +1,1 @@
+"""Content loading: YAML with line numbers, typed models, one-line errors. No golf rules."""

@@ -1,0 +1,76 @@
+"""The screen flow: the one place that decides which screen follows which.
+
+    menu ─▶ (guide, first time) ─▶ play ⇄ pause
+              play ─▶ between ─▶ play … ─▶ results ─▶ play again | menu
+
+Screens get this object and ask it to move on (`views.navigation.Navigator`); none imports another.
+"""
+
+from __future__ import annotations
+
+import arcade
+from polygolf.game.session import Game, HoleResult
+from polygolf.game.views.between import BetweenView
+from polygolf.game.views.guide import GuideView
+from polygolf.game.views.menu import MenuView
+from polygolf.game.views.pause import PauseView
+from polygolf.game.views.play import PlayView
+from polygolf.game.views.results import ResultsView
+
+
+class ScreenFlow:
+    def __init__(self, window: arcade.Window, game: Game) -> None:
+        self.window = window
+        self.game = game
+        self.playing: PlayView | None = None
+
+    def _show(self, view: arcade.View) -> arcade.View:
+        self.window.show_view(view)
+        return view
+
+    def _leave_hole(self) -> None:
+        if self.playing is not None:
+            self.playing.close()
+            self.playing = None
+
+    def menu(self) -> None:
+        self._leave_hole()
+        self.game.round = None
+        self._show(MenuView(self.game, self))
+
+    def new_round(self, start_at: int = 0) -> None:
+        self._leave_hole()
+        self.game.start_round(start_at)
+        if self.game.guide_seen:
+            self.next_hole()
+        else:
+            self._show(GuideView(self.game, then=self.next_hole))
+
+    def guide(self) -> None:
+        self._show(GuideView(self.game, then=self.menu))
+
+    def pause(self, play: arcade.View) -> None:
+        self._show(PauseView(self.game, play, self))
+
+    def resume(self, play: arcade.View) -> None:
+        self._show(play)
+
+    def hole_done(self, result: HoleResult) -> None:
+        self.playing = None
+        round_ = self.game.round
+        if round_ is None or round_.over:
+            self._show(ResultsView(self.game, round_, self))
+        else:
+            self._show(BetweenView(self.game, round_, result, self))
+
+    def next_hole(self) -> None:
+        round_ = self.game.round
+        if round_ is None or round_.over:
+            self._show(ResultsView(self.game, round_, self))
+            return
+        self.playing = PlayView(self.game, round_, self)
+        self._show(self.playing)
+
+    def quit(self) -> None:
+        self._leave_hole()
+        self.window.close()

@@ -1,0 +1,1 @@
+"""Tooling beside the command line: the accuracy report, `explain`, `validate`."""

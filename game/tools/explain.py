@@ -1,0 +1,72 @@
+"""`polygolf explain`: the pipeline of a scene or a hole, and the reason each stage is in it.
+
+Reads the one stage table (`engine.assembly.stages`): every stage the world holds with why, and every
+stage an effect could bring that this world leaves out.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from polygolf.engine.assembly.simulation import Simulation
+from polygolf.engine.assembly.stages import STAGES
+from polygolf.engine.golf.holes import Hole, find_course, load_courses, load_hole
+from polygolf.engine.golf.play import HolePlay
+from polygolf.engine.loading.course import load_library
+from polygolf.engine.loading.paths import HOLES_DIR
+from polygolf.engine.loading.scene import ShapeSpec, build_scene, load_scene
+from polygolf.engine.loading.yamlsource import ContentError, load_yaml
+
+
+def _describe(title: str, sim: Simulation) -> str:
+    knobs = sim.knobs
+    lines = [f"{title} at {sim.preset_name}: {knobs.substeps} substeps, {knobs.iterations} iterations, "
+             f"{knobs.position_correction} position correction"]
+    present = set(sim.system_names)
+    for stage in STAGES:
+        if stage.name not in present:
+            continue
+        why = sim.reasons.get(stage.effect or "", stage.why)
+        if stage.name == "resolve":
+            friction = sim.reasons.get("friction")
+            why += f"; friction {'on: ' + friction if friction else 'off: no contact has friction'}"
+        lines.append(f"  {stage.name:<12} {why}")
+    absent = [stage.name for stage in STAGES if stage.effect is not None and stage.name not in present]
+    if absent:
+        lines.append(f"  (no {', no '.join(absent)})")
+    return "\n".join(lines)
+
+
+def _hole(target: str) -> Hole:
+    """A hole file, COURSE:HOLE (number or id), or a hole id in the shipped content."""
+    path = Path(target)
+    if path.suffix in (".yaml", ".yml"):
+        return load_hole(path, load_library(path.parent / "tiles.yaml"))
+    if ":" in target:
+        course_name, which = target.split(":", 1)
+        holes = find_course(load_courses(), course_name).holes
+        entry = holes[int(which) - 1] if which.isdigit() and 1 <= int(which) <= len(holes) else next(
+            (h for h in holes if getattr(h, "id", None) == which), None)
+        if entry is None:
+            raise KeyError(f"{course_name} has no hole {which!r}")
+        if isinstance(entry, ContentError):
+            raise entry
+        return entry
+    return load_hole(HOLES_DIR / f"{target}.yaml", load_library())
+
+
+def explain(target: str, preset: str | None = None) -> str:
+    """`target`: a scene file, a hole file, or COURSE:HOLE (hole number or id)."""
+    path = Path(target)
+    if path.suffix in (".yaml", ".yml") and path.exists():
+        data, _ = load_yaml(path)
+        if not (isinstance(data, dict) and "tiles" in data):
+            scene = load_scene(path)
+            with build_scene(scene, preset) as sim:
+                return _describe(scene.name, sim)
+    hole = _hole(target)
+    play = HolePlay(hole, ShapeSpec(regular=5, radius=1.0), preset or "balanced")
+    try:
+        return _describe(f"{hole.spec.name} ({hole.id})", play.sim)
+    finally:
+        play.close()

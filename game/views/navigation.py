@@ -1,0 +1,35 @@
+"""What a screen may ask of the screen flow (`game.flow.ScreenFlow`). Screens hold the flow and call
+these; only the flow knows which screen comes next, so no screen imports another."""
+
+from __future__ import annotations
+
+from typing import Protocol
+
+import arcade
+from polygolf.game.session import HoleResult
+
+
+class Navigator(Protocol):
+    def menu(self) -> None:
+        """The main menu (any round in progress is abandoned)."""
+
+    def new_round(self) -> None:
+        """A round of the chosen course from its first hole (the guide first, if never seen)."""
+
+    def guide(self) -> None:
+        """How to play, then back to the menu."""
+
+    def pause(self, play: arcade.View) -> None:
+        """The pause menu over the hole being played."""
+
+    def resume(self, play: arcade.View) -> None:
+        """Back to the hole being played."""
+
+    def hole_done(self, result: HoleResult) -> None:
+        """A hole finished: the between-holes screen, or the scorecard after the last."""
+
+    def next_hole(self) -> None:
+        """On to the round's next hole, or the scorecard if there is none."""
+
+    def quit(self) -> None:
+        """Close the game."""

@@ -15,8 +15,9 @@ import statistics
 import time
 
 import arcade
+
 from polygolf.engine.golf.golfer import golfer_for
-from polygolf.engine.loading.course import find_course
+from polygolf.engine.golf.holes import find_course
 from polygolf.game.session import Game
 from polygolf.game.views.play import PlayView
 
@@ -40,13 +41,13 @@ def main() -> None:
         view = PlayView(game, game.start_round(number - 1))
         window.show_view(view)
         world = view.world
-        golfer = golfer_for(world)
+        golfer = golfer_for(world.hole)
         frames, draws, physics = [], [], []
         for _ in range(args.frames + 10):
             if world.state.finished:
                 view.restart_hole()
                 world = view.world
-                golfer = golfer_for(world)
+                golfer = golfer_for(world.hole)
             if world.ball_at_rest:
                 world.shoot(*golfer.plan((world.ball.x, world.ball.y)))
             t0 = time.perf_counter()

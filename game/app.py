@@ -91,6 +91,7 @@ def render_hole(course: str, hole: int, theme: str | None, shape: str | None, ou
     """Draw a hole as the play view shows it, headless, to a PNG."""
     os.environ.setdefault("ARCADE_HEADLESS", "1")
     import arcade
+
     from polygolf.game.views.play import PlayView
 
     game = _game_for(course, hole, theme, shape)

@@ -11,11 +11,10 @@ import json
 import sys
 from collections.abc import Sequence
 
+from polygolf import __version__
 from polygolf.engine.loading.paths import CONTENT_DIR
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.engine.physics.presets import PRESETS
-
-from polygolf import __version__
 
 EXIT_CONTENT = 2
 

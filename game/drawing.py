@@ -17,6 +17,7 @@ from arcade.shape_list import (
     create_polygon,
     create_rectangle_filled,
 )
+
 from polygolf.engine.golf.layout import HoleLayout
 from polygolf.engine.physics import polygon
 from polygolf.engine.physics.shot import clamp_arrow, shot_power

@@ -9,6 +9,7 @@ Screens get this object and ask it to move on (`views.navigation.Navigator`); no
 from __future__ import annotations
 
 import arcade
+
 from polygolf.game.session import Game, HoleResult
 from polygolf.game.views.between import BetweenView
 from polygolf.game.views.guide import GuideView

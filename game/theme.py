@@ -5,10 +5,11 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Annotated
 
+from pydantic import StringConstraints
+
 from polygolf.engine.loading.paths import THEMES_DIR
 from polygolf.engine.loading.scene import Strict_
 from polygolf.engine.loading.yamlsource import load
-from pydantic import StringConstraints
 
 Colour = Annotated[str, StringConstraints(pattern=r"^#([0-9a-fA-F]{6}|[0-9a-fA-F]{8})$")]
 RGBA = tuple[int, int, int, int]

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+
 from polygolf.engine.physics import polygon
 from polygolf.engine.physics.collide import collide_polygons, separation
 from polygolf.engine.physics.toi import time_of_impact

@@ -7,9 +7,13 @@ import shutil
 import textwrap
 
 import pytest
+
 from polygolf.engine.golf.golfer import play_hole
-from polygolf.engine.golf.layout import HoleWorld, layout_hole, point_clearance
-from polygolf.engine.loading.course import HOLES_DIR, load_courses, load_hole, load_library
+from polygolf.engine.golf.holes import load_courses, load_hole
+from polygolf.engine.golf.layout import layout_hole, point_clearance
+from polygolf.engine.golf.play import HolePlay
+from polygolf.engine.loading.course import load_library
+from polygolf.engine.loading.paths import HOLES_DIR
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.game.tools.validate import validate_paths
@@ -51,7 +55,7 @@ def test_meadow_has_real_variety(courses):
 def test_every_hole_can_be_holed_by_real_shots(courses, course_index):
     """The scripted golfer finishes every hole in the cup within the stroke limit: the holes are playable."""
     for hole in courses[course_index].playable:
-        world = HoleWorld(hole, PENTAGON)
+        world = HolePlay(hole, PENTAGON)
         try:
             play_hole(world)
             assert world.state.holed, f"{hole.id}: not holed in {world.state.max_strokes} strokes"
@@ -61,7 +65,7 @@ def test_every_hole_can_be_holed_by_real_shots(courses, course_index):
 
 def test_layout_merges_walls_and_keeps_gates_open(library):
     hole = load_hole(HOLES_DIR / "narrow-gates.yaml", library)
-    layout = layout_hole(hole)
+    layout = layout_hole(hole.spec, hole.library)
     # One long box per straight run: 2 long sides + 2 ends + 2 boxes per gate boundary (4 of them).
     assert len(layout.borders) == 2 + 2 + 4 * 2
     # The gates are open: the line along the middle is clear.
@@ -145,7 +149,7 @@ def test_a_broken_hole_leaves_the_rest_of_the_course_playable(tmp_path):
 
 def test_hole_world_holds_only_what_the_hole_needs(library, courses):
     straight = courses[0].playable[0]
-    with_hole = HoleWorld(straight, PENTAGON)
+    with_hole = HolePlay(straight, PENTAGON)
     try:
         assert with_hole.sim.system_names == ["shot", "integrate", "spin", "drag", "ccd", "broadphase", "narrowphase",
                                               "resolve", "restitution", "cup", "scoring"]
@@ -153,7 +157,7 @@ def test_hole_world_holds_only_what_the_hole_needs(library, courses):
     finally:
         with_hole.close()
     test_level = next(c for c in courses if c.name == "Collision Test").playable[0]
-    launcher = HoleWorld(test_level, PENTAGON)
+    launcher = HolePlay(test_level, PENTAGON)
     try:
         assert "launch" in launcher.sim.system_names and "drag" not in launcher.sim.system_names
         launcher.step(30)

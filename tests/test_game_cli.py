@@ -9,6 +9,7 @@ import sys
 
 import numpy as np
 from PIL import Image
+
 from polygolf.game.cli import main
 
 

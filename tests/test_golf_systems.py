@@ -6,12 +6,10 @@ import math
 
 import esper
 import pytest
+
 from polygolf.engine.assembly.assemble import make_body, make_collider
-from polygolf.engine.assembly.resources import PhysicsContext
-from polygolf.engine.components import Ball, Body, Cup, HoleState, Material, ShotInput
+from polygolf.engine.components import Ball, Body, Cup, HoleState, Launcher, Material, ShotInput
 from polygolf.engine.physics import polygon
-from polygolf.engine.physics.grid import SpatialGrid
-from polygolf.engine.physics.presets import preset
 from polygolf.engine.physics.settings import MAX_SHOT_SPEED, MAX_SHOT_SPIN, SHOT_POWER, SPIN_RATIO
 from polygolf.engine.physics.shot import shot_velocity
 from polygolf.engine.systems.cup import CupProcessor
@@ -22,8 +20,7 @@ from polygolf.engine.systems.shot import ShotProcessor
 SQUARE = polygon.normalise(polygon.regular_polygon(4, 0.45))[0]
 
 
-def ctx() -> PhysicsContext:
-    return PhysicsContext(knobs=preset("balanced"), effects=frozenset(), static_grid=SpatialGrid(2.0))
+from .helpers import resources as ctx
 
 
 def ball_entity(asleep=True, **state):
@@ -74,42 +71,41 @@ def test_linear_and_angular_parts_are_capped_apart():
     (0.54, 0.01, True), (0.56, 0.0, False),  # at the rim: nothing drops, outside: never
 ])
 def test_cup_cap_falls_linearly_from_centre_to_rim(world, distance, speed, drops):
-    esper.add_processor(CupProcessor(ctx()))
+    res = ctx()
+    esper.add_processor(CupProcessor(res))
     esper.create_entity(Cup(0.0, 0.0, 0.55, 4.0))
     body = Body.dynamic(distance, 0.0, 1.0, 1.0, vx=0.0, vy=speed)
     esper.create_entity(body, Ball(0.0, 0.0))
-    holed = []
-
-    def on_holed(entity):  # esper keeps handlers by weak reference: hold this one
-        holed.append(entity)
-
-    esper.set_handler("holed", on_holed)
     esper.process()
+    holed = [value for kind, value in res.events.fired if kind == "holed"]
     assert bool(holed) is drops
     if drops:
         assert body.asleep and (body.x, body.y) == (0.0, 0.0)
 
 
 def test_scoring_counts_strokes_and_holes(world):
-    esper.add_processor(ScoringProcessor(ctx()))
+    res = ctx()
+    esper.add_processor(ScoringProcessor(res))
     state = HoleState(par=3, max_strokes=10)
     esper.create_entity(state)
     for _ in range(2):
-        esper.dispatch_event("shot", 1)
-    esper.dispatch_event("penalty", 1)
-    esper.dispatch_event("holed", 1)
-    esper.dispatch_event("shot", 1)  # after the hole is over: not counted
+        res.events.emit("shot", 1)
+    res.events.emit("penalty", 1)
+    res.events.emit("holed", 1)
+    res.events.emit("shot", 1)  # after the hole is over: not counted
+    esper.process()
     assert (state.strokes, state.penalties, state.score, state.holed) == (2, 1, 3, True)
 
 
 def test_scoring_picks_the_ball_up_after_the_last_stroke(world):
-    esper.add_processor(ScoringProcessor(ctx()))
+    res = ctx()
+    esper.add_processor(ScoringProcessor(res))
     state = HoleState(par=3, max_strokes=2)
     esper.create_entity(state)
     body = Body.dynamic(0.0, 0.0, 1.0, 1.0, vx=1.0)
     esper.create_entity(body, Ball(0.0, 0.0))
-    esper.dispatch_event("shot", 1)
-    esper.dispatch_event("shot", 1)
+    res.events.emit("shot", 1)
+    res.events.emit("shot", 1)
     esper.process()
     assert not state.picked_up  # still rolling: it might drop
     body.asleep = True
@@ -119,12 +115,13 @@ def test_scoring_picks_the_ball_up_after_the_last_stroke(world):
 
 def test_launcher_sends_the_ball_from_the_tee_again_and_again(world):
     context = ctx()
-    esper.add_processor(LaunchProcessor(context, (7.0, 2.5), 1.0, (3.0, 3.0)))
+    esper.add_processor(LaunchProcessor(context))
+    esper.create_entity(Launcher((7.0, 2.5), 1.0, (3.0, 3.0)))
     _, body, _ = ball_entity(asleep=True)
     esper.process()
     assert (body.x, body.y, body.vx, body.vy, body.asleep) == (3.0, 3.0, 7.0, 2.5, False)
     body.x, body.vx = 9.0, 0.0
-    for _ in range(round(1.0 / context.dt) - 1):
+    for _ in range(round(1.0 / context.config.dt) - 1):
         esper.process()
     assert body.x == 9.0
     esper.process()

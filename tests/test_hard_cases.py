@@ -20,6 +20,7 @@ def world_vertices(body, outline):
 
 def outline_of(sim, name="ball"):
     import esper
+
     from polygolf.engine.components import Collider
 
     esper.switch_world(sim.world)
@@ -48,7 +49,7 @@ def test_off_centre_vertex_hit_matches_closed_form_impulse(preset):
         # The corner that strikes is the leftmost; without spin the pose at impact is the initial one.
         corner = min(world_vertices(ball, outline_of(sim)), key=lambda p: p[0])
         rx, ry = corner[0] - ball.x, corner[1] - ball.y
-        step_until(sim, lambda: sim.ctx.bounces >= 1, max_frames=120)
+        step_until(sim, lambda: sim.res.stats.bounces >= 1, max_frames=120)
         nx, ny = 1.0, 0.0  # wall normal, towards the ball
         r_cross_n = rx * ny - ry * nx
         vn = v0 * nx
@@ -84,7 +85,7 @@ def test_corner_triangle_stays_inside_loses_energy_and_rests_shallow(preset):
 def test_fast_spin_with_friction_never_gains_energy(preset):
     with scene_sim("fast-spin", preset) as sim:
         before = sim.kinetic_energy()
-        step_until(sim, lambda: sim.ctx.bounces >= 1, max_frames=120)
+        step_until(sim, lambda: sim.res.stats.bounces >= 1, max_frames=120)
         sim.run(1.0)
         assert sim.metrics.max_energy_rise <= ENERGY_TOLERANCE * before
         assert sim.kinetic_energy() < before
@@ -109,7 +110,7 @@ def test_star_lands_flat_on_two_tips_without_energy_gain_or_spin(preset):
         before = sim.kinetic_energy()
         sim.run(1.0)
         star = sim.body("star")
-        assert sim.ctx.bounces >= 1
+        assert sim.res.stats.bounces >= 1
         assert abs(star.spin) < 1e-6
         assert star.vx == pytest.approx(-e * v0, rel=0.01)
         assert abs(star.vy) < 1e-9

@@ -7,8 +7,8 @@ import math
 
 import esper
 import pytest
-from polygolf.engine.assembly.assemble import make_body, make_collider, make_wall, processors_for
-from polygolf.engine.assembly.resources import PhysicsContext
+
+from polygolf.engine.assembly.assemble import make_body, make_collider
 from polygolf.engine.components import (
     Ball,
     Body,
@@ -23,18 +23,19 @@ from polygolf.engine.components import (
     Water,
     Windmill,
 )
-from polygolf.engine.golf.layout import HoleWorld, hole_effects
-from polygolf.engine.loading.course import load_courses
+from polygolf.engine.golf.holes import load_courses
+from polygolf.engine.golf.play import HolePlay
+from polygolf.engine.golf.world import hole_effects
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.physics import polygon
-from polygolf.engine.physics.grid import SpatialGrid
-from polygolf.engine.physics.presets import preset
 from polygolf.engine.systems.drag import DragProcessor
 from polygolf.engine.systems.ice import IceProcessor
 from polygolf.engine.systems.sand import SandProcessor
 from polygolf.engine.systems.scoring import ScoringProcessor
 from polygolf.engine.systems.slope import SlopeProcessor
 from polygolf.engine.systems.water import WaterProcessor
+
+from .helpers import pipeline, resources
 
 SQUARE = polygon.normalise(polygon.regular_polygon(4, 0.45))[0]
 BIG = ((-50.0, -50.0), (50.0, -50.0), (50.0, 50.0), (-50.0, 50.0))
@@ -45,14 +46,8 @@ def region(outline=BIG) -> Region:
     return Region(tuple(outline), (min(xs), min(ys), max(xs), max(ys)))
 
 
-def context(walls=()) -> PhysicsContext:
-    grid = SpatialGrid(3.0)
-    for outline, material, extra in walls:
-        wall = make_wall(outline, material)
-        ent = esper.create_entity(wall, *extra)
-        for k, box in enumerate(wall.piece_aabbs):
-            grid.insert((ent, k), box)
-    return PhysicsContext(knobs=preset("balanced"), effects=frozenset(), static_grid=grid)
+def context(walls=(), effects=()):
+    return resources(walls=walls, cell=3.0, effects=effects)
 
 
 def rolling_ball(vx=6.0, drag=(0.4, 1.2), x=0.0, y=0.0):
@@ -63,7 +58,7 @@ def rolling_ball(vx=6.0, drag=(0.4, 1.2), x=0.0, y=0.0):
 
 
 def run(seconds, ctx):
-    for _ in range(round(seconds / ctx.dt)):
+    for _ in range(round(seconds / ctx.config.dt)):
         esper.process()
 
 
@@ -120,7 +115,7 @@ def test_water_costs_a_stroke_and_returns_the_ball_to_its_last_rest(world):
 
 
 def mini_world(effects, walls=(), ball_at=(0.0, 0.0), ball_v=(0.0, 0.0), restitution=0.5):
-    ctx = context(walls)
+    ctx = context(walls, effects)
     body = make_body(SQUARE, ball_at, 1.0)
     body.vx, body.vy = ball_v
     esper.create_entity(body, make_collider(SQUARE, Material(restitution, 0.0)), Ball(*ball_at))
@@ -131,10 +126,10 @@ def test_bumper_returns_the_ball_faster_by_its_kick(world):
     kick, e, v0 = 2.5, 0.5, -6.0
     half = 0.45 / math.sqrt(2)
     wall = (((-2.0, -3.0), (0.0, -3.0), (0.0, 3.0), (-2.0, 3.0)), Material(1.0, 0.0), (Bumper(kick),))
-    ctx, body = mini_world({"restitution", "bumper"}, [wall], ball_at=(1.0, 0.0), ball_v=(v0, 0.0), restitution=e)
+    effects = {"spin", "restitution", "bumper", "ccd"}
+    ctx, body = mini_world(effects, [wall], ball_at=(1.0, 0.0), ball_v=(v0, 0.0), restitution=e)
     body.angle = math.pi / 4  # face-on
-    for proc in processors_for(ctx, {"spin", "restitution", "bumper", "ccd"}, True, True, 3.0):
-        esper.add_processor(proc, priority=-len(esper._processors))
+    pipeline(ctx, effects, walls=True)
     run(0.5, ctx)
     assert body.x > half
     assert body.vx == pytest.approx(-e * v0 + kick, rel=0.01)  # once, though the face touches at two points
@@ -146,21 +141,19 @@ def test_windmill_contact_reverses_the_relative_normal_velocity(world):
     """A ball at rest struck by a turning blade: after the impact the relative normal velocity at the
     contact point is -e times what it was (the blade is kinematic: infinite mass)."""
     e, speed = 0.6, 2.0
-    ctx, ball = mini_world({"windmill"}, ball_at=(1.5, 0.62), restitution=e)
+    effects = {"windmill", "spin", "restitution"}
+    ctx, ball = mini_world(effects, ball_at=(1.5, 0.62), restitution=e)
     blade = polygon.normalise(((-2.3, -0.18), (2.3, -0.18), (2.3, 0.18), (-2.3, 0.18)))[0]
     mill = Body(x=0.0, y=0.0, spin=speed)
     esper.create_entity(mill, make_collider(blade, Material(1.0, 0.0)), Windmill(speed))
-    effects = {"windmill", "spin", "restitution"}
-    procs = processors_for(ctx, effects, True, False, 3.0)
-    for proc in procs:
-        esper.add_processor(proc, priority=-len(esper._processors))
+    procs = pipeline(ctx, effects, walls=False)
     by_name = {p.name: p for p in procs}
     before = None
     for _ in range(240):
         for proc in procs:
             proc.process()
-            if proc.name == "resolve" and ctx.manifolds and before is None:
-                m = ctx.manifolds[0]
+            if proc.name == "resolve" and ctx.contacts.manifolds and before is None:
+                m = ctx.contacts.manifolds[0]
                 p = m.points[0]
                 before = (m, p, p.approach_speed)
             if proc.name == "restitution" and before is not None:
@@ -203,7 +196,7 @@ def test_every_hole_holds_exactly_the_systems_it_needs(courses):
              "narrowphase", "resolve", "restitution", "bumper", "water", "cup", "scoring"]
     for course in courses:
         for hole in course.playable:
-            world = HoleWorld(hole, ShapeSpec(regular=5, radius=1.0))
+            world = HolePlay(hole, ShapeSpec(regular=5, radius=1.0))
             try:
                 names = world.sim.system_names
                 needed = set(core) | (set(hole_effects(hole)) & (HAZARD_EFFECTS | {"launch"}))
@@ -223,7 +216,7 @@ def test_hazard_course_plays_end_to_end(courses):
 
     hazards = next(c for c in courses if c.name == "Hazards")
     for hole in hazards.playable:
-        world = HoleWorld(hole, ShapeSpec(star=(5, 2), radius=1.0))
+        world = HolePlay(hole, ShapeSpec(star=(5, 2), radius=1.0))
         try:
             play_hole(world)
             assert world.state.finished, hole.id

@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 import pytest
+
 from polygolf.engine.physics import polygon
 from polygolf.engine.physics.mass import mass_properties
 

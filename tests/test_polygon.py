@@ -7,6 +7,7 @@ import math
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
+
 from polygolf.engine.physics import polygon
 from polygolf.engine.physics.polygon import PolygonError
 

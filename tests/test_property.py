@@ -7,6 +7,7 @@ import math
 
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+
 from polygolf.engine.loading.scene import Scene, build_scene
 from polygolf.engine.physics.settings import MAX_SHOT_SPEED
 
@@ -54,6 +55,7 @@ def test_any_shot_in_a_closed_box_is_sane(shape, radius, angle, speed, heading, 
     with build_scene(scene, preset) as sim:
         ball = sim.body("ball")
         import esper
+
         from polygolf.engine.components import Collider
 
         outline = esper.component_for_entity(next(iter(sim.names)), Collider).outline

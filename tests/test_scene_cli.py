@@ -8,6 +8,7 @@ import sys
 import textwrap
 
 import pytest
+
 from polygolf.engine.loading.scene import build_scene, load_scene
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.game.cli import main

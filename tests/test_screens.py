@@ -10,8 +10,10 @@ from pathlib import Path
 import arcade
 import numpy as np
 import pytest
+
 from polygolf.engine.golf.golfer import golfer_for
-from polygolf.engine.loading.course import load_courses
+from polygolf.engine.golf.holes import load_courses
+from polygolf.game.flow import ScreenFlow
 from polygolf.game.session import Game, HoleResult
 from polygolf.game.views.between import BetweenView
 from polygolf.game.views.guide import GuideView
@@ -108,12 +110,13 @@ def aim(window, view: PlayView, origin, arrow, release: bool = True):
 
 
 def test_every_screen_draws_something(window, game, shots_dir):
-    show(window, MenuView(game))
+    flow = ScreenFlow(window, game)
+    show(window, MenuView(game, flow))
     assert_not_blank(snapshot(window, shots_dir, "menu"), "menu")
     round_ = game.start_round()
-    show(window, GuideView(game, then=lambda: PlayView(game, round_)))
+    show(window, GuideView(game, then=flow.next_hole))
     assert_not_blank(snapshot(window, shots_dir, "guide"), "guide")
-    play = show(window, PlayView(game, round_))
+    play = show(window, PlayView(game, round_, flow))
     ball = play.world.ball
     aim(window, play, (ball.x, ball.y), (2.5, 1.0), release=False)
     assert play.aiming
@@ -124,16 +127,17 @@ def test_every_screen_draws_something(window, game, shots_dir):
     key(window, arcade.key.ESCAPE)  # now pauses
     assert isinstance(window.current_view, PauseView)
     assert_not_blank(snapshot(window, shots_dir, "pause"), "pause")
-    show(window, BetweenView(game, round_, round_.finish_hole(3, False)))
+    show(window, BetweenView(game, round_, round_.finish_hole(3, False), flow))
     assert_not_blank(snapshot(window, shots_dir, "between"), "between")
     while not round_.over:
         round_.finish_hole(4, False)
-    show(window, ResultsView(game, round_))
+    show(window, ResultsView(game, round_, flow))
     assert_not_blank(snapshot(window, shots_dir, "results"), "results")
 
 
 def test_environment_button_changes_the_look(window, game, shots_dir):
-    show(window, MenuView(game))
+    flow = ScreenFlow(window, game)
+    show(window, MenuView(game, flow))
     before = snapshot(window, shots_dir, "menu-grass")
     click(window, "theme")
     assert game.theme.name != "Grass"
@@ -141,16 +145,16 @@ def test_environment_button_changes_the_look(window, game, shots_dir):
     assert np.abs(before - after).mean() > 10
     # And on the play screen too.
     game.theme_index = 0
-    show(window, PlayView(game, game.start_round()))
+    show(window, PlayView(game, game.start_round(), flow))
     grass = snapshot(window, shots_dir, "play-grass")
     game.theme_index = [t.name for t in game.themes].index("Sand")
-    show(window, PlayView(game, game.start_round()))
+    show(window, PlayView(game, game.start_round(), flow))
     sand = snapshot(window, shots_dir, "play-sand")
     assert np.abs(grass - sand).mean() > 10
 
 
 def test_polygon_buttons_change_the_ball(window, game):
-    show(window, MenuView(game))
+    show(window, MenuView(game, ScreenFlow(window, game)))
     first = game.shape_label
     click(window, "shape")
     assert game.shape_label != first
@@ -161,7 +165,7 @@ def test_polygon_buttons_change_the_ball(window, game):
 
 
 def test_a_full_round_of_nine_holes_ends_on_the_scorecard_with_the_right_totals(window, game, shots_dir):
-    show(window, MenuView(game))
+    ScreenFlow(window, game).menu()
     assert game.course.name == "Meadow"
     click(window, "play")
     assert isinstance(window.current_view, GuideView)  # offered before the first round
@@ -182,7 +186,7 @@ def test_a_full_round_of_nine_holes_ends_on_the_scorecard_with_the_right_totals(
         if world.state.finished:
             scores[view.round.number] = world.state.score
         elif world.ball_at_rest:
-            golfer = golfers.setdefault(id(world), golfer_for(world))
+            golfer = golfers.setdefault(id(world), golfer_for(world.hole))
             origin, arrow = golfer.plan((world.ball.x, world.ball.y))
             strokes = world.state.strokes
             aim(window, view, origin, arrow)
@@ -209,14 +213,14 @@ def test_a_full_round_of_nine_holes_ends_on_the_scorecard_with_the_right_totals(
 def test_a_broken_hole_is_skipped_with_a_visible_message(window, tmp_path, shots_dir):
     import shutil
 
-    from polygolf.engine.loading.course import HOLES_DIR
+    from polygolf.engine.loading.paths import HOLES_DIR
 
     shutil.copy(HOLES_DIR / "tiles.yaml", tmp_path / "tiles.yaml")
     shutil.copy(HOLES_DIR / "straight.yaml", tmp_path / "straight.yaml")
     (tmp_path / "broken.yaml").write_text("name: Broken\npar: 3\ntiles:\n  - {at: [0, 0], borders: nowhere}\n")
     (tmp_path / "courses.yaml").write_text("courses:\n  - name: Mixed\n    holes: [broken, straight]\n")
     game = Game(courses=load_courses(tmp_path / "courses.yaml"), themes=Game.load().themes)
-    play = show(window, PlayView(game, game.start_round()))
+    play = show(window, PlayView(game, game.start_round(), ScreenFlow(window, game)))
     assert play.world.hole.id == "straight"
     assert "Hole 1 skipped" in play.banner.text and "broken.yaml:4: tiles[0].borders" in play.banner.text
     assert_not_blank(snapshot(window, shots_dir, "play-skipped-banner"), "play")
@@ -226,7 +230,7 @@ def test_a_broken_hole_is_skipped_with_a_visible_message(window, tmp_path, shots
 
 
 def test_the_window_resizes_and_the_hole_still_fits(window, game, shots_dir):
-    play = show(window, PlayView(game, game.start_round()))
+    play = show(window, PlayView(game, game.start_round(), ScreenFlow(window, game)))
     window.set_size(800, 600)
     send(window, "on_resize", 800, 600)
     x0, y0, x1, y1 = play.world.layout.bounds
@@ -239,7 +243,7 @@ def test_the_window_resizes_and_the_hole_still_fits(window, game, shots_dir):
 
 
 def test_f3_overlay_shows_each_systems_cost_and_keys_switch_the_preset(window, game, shots_dir):
-    play = show(window, PlayView(game, game.start_round()))
+    play = show(window, PlayView(game, game.start_round(), ScreenFlow(window, game)))
     key(window, arcade.key.F3)
     assert play.overlay
     play.world.shoot((play.world.ball.x, play.world.ball.y), (2.0, 0.0))
@@ -247,13 +251,13 @@ def test_f3_overlay_shows_each_systems_cost_and_keys_switch_the_preset(window, g
         frame(window)
     lines = play.overlay_lines()
     assert lines[0].startswith("preset balanced: 4 substeps x 8 iterations")
-    for name in play.world.sim.system_names:
+    for name in play.world.system_names:
         line = next(line for line in lines if line.strip().startswith(name + " "))
         assert float(line.split()[-2]) >= 0.0
     assert play.system_us["narrowphase"] > 0.0 and play.system_us["integrate"] > 0.0
     key(window, arcade.key.KEY_1)
     frame(window)
-    assert play.world.sim.ctx.knobs.substeps == 2 and game.preset == "fast"
+    assert play.world.knobs.substeps == 2 and game.preset == "fast"
     assert play.overlay_lines()[0].startswith("preset fast: 2 substeps")
     assert_not_blank(snapshot(window, shots_dir, "play-overlay"), "overlay")
     key(window, arcade.key.KEY_2)

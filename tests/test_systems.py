@@ -6,13 +6,11 @@ import math
 
 import esper
 import pytest
-from polygolf.engine.assembly.assemble import make_body, make_collider, make_wall
-from polygolf.engine.assembly.resources import PhysicsContext
+
+from polygolf.engine.assembly.assemble import make_body, make_collider
 from polygolf.engine.components import Body, Drag, Material
 from polygolf.engine.physics import polygon
 from polygolf.engine.physics.contact import ContactPoint, Manifold
-from polygolf.engine.physics.grid import SpatialGrid
-from polygolf.engine.physics.presets import preset
 from polygolf.engine.physics.settings import TIME_TO_REST, TOI_TARGET
 from polygolf.engine.systems.broadphase import BroadphaseProcessor
 from polygolf.engine.systems.ccd import CCDProcessor
@@ -27,14 +25,7 @@ from polygolf.engine.systems.spin import SpinProcessor
 SQUARE = polygon.normalise(polygon.regular_polygon(4, 0.5))[0]
 
 
-def context(knobs="balanced", walls=(), cell=2.0) -> PhysicsContext:
-    grid = SpatialGrid(cell)
-    for outline in walls:
-        wall = make_wall(outline, Material())
-        ent = esper.create_entity(wall)
-        for k, box in enumerate(wall.piece_aabbs):
-            grid.insert((ent, k), box)
-    return PhysicsContext(knobs=preset(knobs), effects=frozenset(), static_grid=grid)
+from .helpers import resources as context
 
 
 def box(cx, cy, hx, hy):
@@ -59,7 +50,7 @@ def test_integrate_moves_by_velocity_and_skips_resting_bodies(world):
     esper.create_entity(resting)
     esper.add_processor(IntegrateProcessor(ctx))
     esper.process()
-    assert (moving.x, moving.y) == pytest.approx((3.0 * ctx.dt, -1.0 * ctx.dt))
+    assert (moving.x, moving.y) == pytest.approx((3.0 * ctx.config.dt, -1.0 * ctx.config.dt))
     assert (resting.x, resting.y) == (5.0, 5.0)
 
 
@@ -70,7 +61,7 @@ def test_integrate_puts_a_still_damped_body_to_rest_and_leaves_a_coasting_one(wo
     esper.create_entity(still, Drag(linear=0.5))
     esper.create_entity(coasting)
     esper.add_processor(IntegrateProcessor(ctx))
-    for _ in range(int(TIME_TO_REST / ctx.dt) + 2):
+    for _ in range(int(TIME_TO_REST / ctx.config.dt) + 2):
         esper.process()
     assert still.asleep and still.vx == 0.0
     assert not coasting.asleep and coasting.vx == 0.001
@@ -82,7 +73,7 @@ def test_spin_turns_by_angular_velocity(world):
     esper.create_entity(body)
     esper.add_processor(SpinProcessor(ctx))
     esper.process()
-    assert body.angle == pytest.approx(2.0 * ctx.dt)
+    assert body.angle == pytest.approx(2.0 * ctx.config.dt)
 
 
 def test_drag_is_exact_exponential_decay(world):
@@ -90,7 +81,7 @@ def test_drag_is_exact_exponential_decay(world):
     body = Body.dynamic(0.0, 0.0, 1.0, 1.0, vx=10.0, spin=4.0)
     esper.create_entity(body, Drag(linear=0.7, angular=1.5))
     esper.add_processor(DragProcessor(ctx))
-    for _ in range(60 * ctx.knobs.substeps):
+    for _ in range(60 * ctx.config.knobs.substeps):
         esper.process()
     assert body.vx == pytest.approx(10.0 * math.exp(-0.7), rel=1e-12)
     assert body.spin == pytest.approx(4.0 * math.exp(-1.5), rel=1e-12)
@@ -98,13 +89,13 @@ def test_drag_is_exact_exponential_decay(world):
 
 def test_gravity_adds_constant_acceleration(world):
     ctx = context()
-    ctx.gravity = (1.0, -2.0)
+    ctx.config.gravity = (1.0, -2.0)
     body = Body.dynamic(0.0, 0.0, 1.0, 1.0)
     esper.create_entity(body)
     esper.add_processor(GravityProcessor(ctx))
     for _ in range(10):
         esper.process()
-    assert (body.vx, body.vy) == pytest.approx((10 * ctx.dt, -20 * ctx.dt))
+    assert (body.vx, body.vy) == pytest.approx((10 * ctx.config.dt, -20 * ctx.config.dt))
 
 
 def test_broadphase_pairs_only_neighbours(world):
@@ -122,11 +113,11 @@ def test_broadphase_pairs_only_neighbours(world):
     eb = esper.create_entity(pair_b, pair_b_col)
     esper.create_entity(asleep_a, asleep_a_col)
     esper.create_entity(asleep_b, asleep_b_col)
-    esper.add_processor(BroadphaseProcessor(ctx, cell_size=2.0))
+    esper.add_processor(BroadphaseProcessor(ctx))
     esper.process()
-    assert list(ctx.wall_candidates) == [e_near]
-    assert [wall for wall, _ in ctx.wall_candidates[e_near]] == [1]  # the first wall only
-    assert ctx.body_pairs == [(min(ea, eb), max(ea, eb))]  # resting pairs and far bodies: none
+    assert list(ctx.candidates.walls) == [e_near]
+    assert [wall for wall, _ in ctx.candidates.walls[e_near]] == [1]  # the first wall only
+    assert ctx.candidates.pairs == [(min(ea, eb), max(ea, eb))]  # resting pairs and far bodies: none
 
 
 def test_narrowphase_square_face_gives_one_two_point_manifold(world):
@@ -134,11 +125,11 @@ def test_narrowphase_square_face_gives_one_two_point_manifold(world):
     half = 0.5 / math.sqrt(2.0)
     body, col = ball(half - 0.002, 0.0)  # 2 mm into the wall
     ent = esper.create_entity(body, col)
-    ctx.wall_candidates = {ent: [(1, 0)]}
+    ctx.candidates.walls = {ent: [(1, 0)]}
     esper.add_processor(NarrowphaseProcessor(ctx))
     esper.process()
-    assert len(ctx.manifolds) == 1
-    m = ctx.manifolds[0]
+    assert len(ctx.contacts.manifolds) == 1
+    m = ctx.contacts.manifolds[0]
     assert (m.nx, m.ny) == pytest.approx((-1.0, 0.0))  # from the ball to the wall
     assert len(m.points) == 2
     assert [p.separation for p in m.points] == pytest.approx([-0.002, -0.002])
@@ -152,11 +143,11 @@ def test_narrowphase_merges_a_star_landing_on_two_tips(world):
     body, col = ball(-tip_x - 0.001, 0.0, outline=star, angle=0.0)
     assert len(col.pieces) > 1  # non-convex: the two tips are in different pieces
     ent = esper.create_entity(body, col)
-    ctx.wall_candidates = {ent: [(1, 0)]}
+    ctx.candidates.walls = {ent: [(1, 0)]}
     esper.add_processor(NarrowphaseProcessor(ctx))
     esper.process()
-    assert len(ctx.manifolds) == 1, "the two tips must form one manifold"
-    m = ctx.manifolds[0]
+    assert len(ctx.contacts.manifolds) == 1, "the two tips must form one manifold"
+    m = ctx.contacts.manifolds[0]
     assert len(m.points) == 2
     ys = sorted(p.y for p in m.points)
     assert ys[0] == pytest.approx(-ys[1])
@@ -166,13 +157,13 @@ def test_narrowphase_carries_impulses_of_persisting_points(world):
     ctx = context(walls=[box(-1.0, 0.0, 1.0, 5.0)])
     body, col = ball(0.5 / math.sqrt(2.0) - 0.002, 0.0)
     ent = esper.create_entity(body, col)
-    ctx.wall_candidates = {ent: [(1, 0)]}
+    ctx.candidates.walls = {ent: [(1, 0)]}
     esper.add_processor(NarrowphaseProcessor(ctx))
     esper.process()
-    for p in ctx.manifolds[0].points:
+    for p in ctx.contacts.manifolds[0].points:
         p.normal_impulse, p.tangent_impulse = 1.5, -0.25
     esper.process()
-    assert [(p.normal_impulse, p.tangent_impulse) for p in ctx.manifolds[0].points] == [(1.5, -0.25)] * 2
+    assert [(p.normal_impulse, p.tangent_impulse) for p in ctx.contacts.manifolds[0].points] == [(1.5, -0.25)] * 2
 
 
 def one_point_manifold(body, px, py, nx, ny, static, separation=0.0, restitution=0.5, friction=0.0):
@@ -184,19 +175,19 @@ def test_resolve_stops_the_approach_of_a_central_hit(world):
     ctx = context()
     body = Body.dynamic(0.0, 0.0, 2.0, 0.5, vx=-3.0, vy=1.0)
     esper.create_entity(body)
-    ctx.manifolds = [one_point_manifold(body, -0.5, 0.0, -1.0, 0.0, ctx.static_body)]
-    esper.add_processor(ResolveProcessor(ctx, friction=False))
+    ctx.contacts.manifolds = [one_point_manifold(body, -0.5, 0.0, -1.0, 0.0, ctx.statics.body)]
+    esper.add_processor(ResolveProcessor(ctx))
     esper.process()
     assert body.vx == pytest.approx(0.0, abs=1e-12)  # plastic: restitution is another processor
     assert body.vy == 1.0 and body.spin == 0.0  # no friction, no lever arm
 
 
 def test_resolve_friction_is_clamped_by_coulomb(world):
-    ctx = context()
+    ctx = context(effects={"friction"})
     body = Body.dynamic(0.0, 0.0, 1.0, 1e9, vx=-1.0, vy=5.0)  # huge inertia: a point mass
     esper.create_entity(body)
-    ctx.manifolds = [one_point_manifold(body, -0.5, 0.0, -1.0, 0.0, ctx.static_body, friction=0.5)]
-    esper.add_processor(ResolveProcessor(ctx, friction=True))
+    ctx.contacts.manifolds = [one_point_manifold(body, -0.5, 0.0, -1.0, 0.0, ctx.statics.body, friction=0.5)]
+    esper.add_processor(ResolveProcessor(ctx))
     esper.process()
     # Normal impulse 1.0 stops vx; friction can take at most 0.5 of the 5.0 sideways.
     assert body.vx == pytest.approx(0.0, abs=1e-9)
@@ -207,8 +198,8 @@ def test_resolve_split_impulse_moves_position_but_not_velocity(world):
     ctx = context()
     body = Body.dynamic(0.0, 0.0, 1.0, 1.0)
     esper.create_entity(body)
-    ctx.manifolds = [one_point_manifold(body, -0.5, 0.0, -1.0, 0.0, ctx.static_body, separation=-0.05)]
-    esper.add_processor(ResolveProcessor(ctx, friction=False))
+    ctx.contacts.manifolds = [one_point_manifold(body, -0.5, 0.0, -1.0, 0.0, ctx.statics.body, separation=-0.05)]
+    esper.add_processor(ResolveProcessor(ctx))
     esper.process()
     assert body.x > 0.0  # pushed out of the wall
     assert (body.vx, body.vy, body.spin) == (0.0, 0.0, 0.0)  # and no energy added
@@ -218,25 +209,25 @@ def test_restitution_repeats_e_times_the_compression_impulse(world):
     ctx = context()
     body = Body.dynamic(0.0, 0.0, 2.0, 0.5, vx=0.0)
     esper.create_entity(body)
-    m = one_point_manifold(body, -0.5, 0.0, -1.0, 0.0, ctx.static_body, restitution=0.6)
+    m = one_point_manifold(body, -0.5, 0.0, -1.0, 0.0, ctx.statics.body, restitution=0.6)
     m.points[0].normal_impulse = 8.0  # what stopped a 4 m/s approach of a 2 kg body
     m.points[0].approach_speed = -4.0
     m.points[0].ra_x = -0.5
-    ctx.manifolds = [m]
+    ctx.contacts.manifolds = [m]
     esper.add_processor(RestitutionProcessor(ctx))
     esper.process()
     assert body.vx == pytest.approx(0.6 * 4.0)
-    assert ctx.bounces == 1
+    assert ctx.stats.bounces == 1
     assert m.points[0].normal_impulse == 0.0  # nothing of the impact is warm-started
 
 
 def test_ccd_stops_a_body_at_its_time_of_impact(world):
     ctx = context(walls=[box(0.0, 0.0, 0.025, 2.0)])
     body, col = ball(-3.0, 0.0)  # moved from x=+2 to x=-3 in one substep: through the wall
-    body.x0, body.y0, body.angle0 = 2.0, 0.0, body.angle
+    body.scratch.x0, body.scratch.y0, body.scratch.angle0 = 2.0, 0.0, body.angle
     esper.create_entity(body, col)
     esper.add_processor(CCDProcessor(ctx))
     esper.process()
     half = 0.5 / math.sqrt(2.0)
     assert body.x - half - 0.025 == pytest.approx(TOI_TARGET, abs=0.3 * TOI_TARGET)
-    assert ctx.toi_hits == 1
+    assert ctx.stats.toi_hits == 1

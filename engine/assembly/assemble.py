@@ -7,6 +7,7 @@ import itertools
 from collections.abc import Iterable, Sequence
 
 import esper
+
 from polygolf.engine.assembly.effects import effects_for
 from polygolf.engine.assembly.resources import Resources, StaticWorld, StepConfig
 from polygolf.engine.assembly.simulation import Simulation

@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import esper
+
 from polygolf.engine.assembly.resources import Resources
 from polygolf.engine.components import Body
 from polygolf.engine.physics.presets import Knobs

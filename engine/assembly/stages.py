@@ -15,6 +15,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import esper
+
 from polygolf.engine.assembly.spec import WorldSpec
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.systems.broadphase import BroadphaseProcessor

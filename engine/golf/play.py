@@ -4,6 +4,7 @@ read what to draw. Views talk to this, never to the simulation's insides."""
 from __future__ import annotations
 
 import esper
+
 from polygolf.engine.assembly.assemble import assemble, resolve_knobs
 from polygolf.engine.assembly.simulation import Simulation
 from polygolf.engine.components import Ball, Body, Bumper, Collider, HoleState, ShotInput, Windmill

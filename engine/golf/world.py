@@ -3,6 +3,7 @@ effects the hole brings (the game's rules always; hazards as its content has the
 
 from __future__ import annotations
 
+from polygolf.engine.assembly.effects import effects_for
 from polygolf.engine.assembly.spec import DynamicPart, KinematicPart, WallPart, WorldSpec
 from polygolf.engine.components import (
     Ball,
@@ -78,3 +79,8 @@ def hole_spec(hole: Hole, shape: ShapeSpec) -> WorldSpec:
                      rules=rules, content_effects=content,
                      listed=tuple(spec.effects) if spec.effects is not None else None, listed_by="the hole",
                      cell_size=lib.tile_size / 2.0)
+
+
+def hole_effects(hole: Hole, substeps: int = 4) -> dict[str, str]:
+    """Effect -> why the hole's world has it (the ball's shape does not change the answer)."""
+    return effects_for(hole_spec(hole, ShapeSpec(regular=5, radius=1.0)), substeps)

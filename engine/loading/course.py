@@ -12,10 +12,11 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated, Literal
 
+from pydantic import Field, Strict, model_validator
+
 from polygolf.engine.loading.paths import HOLES_DIR
 from polygolf.engine.loading.scene import Count, DragSpec, NonNegative, Number, Point, Positive, Strict_, WallSpec
 from polygolf.engine.loading.yamlsource import ContentError, Loc, format_loc, line_of, load_yaml, validate
-from pydantic import Field, Strict, model_validator
 
 SIDES = ("n", "e", "s", "w")
 STEP = {"n": (0, 1), "e": (1, 0), "s": (0, -1), "w": (-1, 0)}

@@ -10,6 +10,8 @@ import math
 from pathlib import Path
 from typing import Annotated, Literal
 
+from pydantic import BaseModel, ConfigDict, Field, Strict, model_validator
+
 from polygolf.engine.assembly.assemble import assemble
 from polygolf.engine.assembly.simulation import Simulation
 from polygolf.engine.assembly.spec import DynamicPart, WallPart, WorldSpec
@@ -17,7 +19,6 @@ from polygolf.engine.components import Drag, Material
 from polygolf.engine.loading.yamlsource import load
 from polygolf.engine.physics import polygon
 from polygolf.engine.physics.presets import PRESETS, Knobs
-from pydantic import BaseModel, ConfigDict, Field, Strict, model_validator
 
 Number = Annotated[float, Strict()]
 Positive = Annotated[float, Strict(), Field(gt=0)]

@@ -1,6 +1,7 @@
 import math
 
 import esper
+
 from polygolf.engine.assembly.resources import Resources
 from polygolf.engine.components import Body, Collider, Wall
 from polygolf.engine.physics.settings import LINEAR_SLOP, TOI_TARGET

@@ -1,6 +1,7 @@
 import math
 
 import esper
+
 from polygolf.engine.assembly.resources import Resources
 from polygolf.engine.components import Body, Drag
 

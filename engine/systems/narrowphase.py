@@ -1,4 +1,5 @@
 import esper
+
 from polygolf.engine.assembly.resources import Resources
 from polygolf.engine.components import Body, Collider, Wall
 from polygolf.engine.physics.contact import Manifold, add_manifolds, collide_pieces, combine

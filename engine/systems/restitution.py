@@ -1,4 +1,5 @@
 import esper
+
 from polygolf.engine.assembly.resources import Resources
 from polygolf.engine.physics import solver
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import arcade
 from arcade.gui import UIAnchorLayout, UIView
+
 from polygolf.game.session import Game, HoleResult, Round, golf_name
 from polygolf.game.views.navigation import Navigator
 from polygolf.game.views.widgets import themed_button, title

@@ -6,6 +6,7 @@ from collections.abc import Callable
 
 import arcade
 from arcade.gui import UIAnchorLayout, UIBoxLayout, UIView
+
 from polygolf.game.session import Game
 from polygolf.game.views.widgets import themed_button, title
 

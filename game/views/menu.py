@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import arcade
 from arcade.gui import UIAnchorLayout, UIBoxLayout, UIView
+
 from polygolf.engine.golf.layout import ball_outline
 from polygolf.game.drawing import BallArt
 from polygolf.game.session import Game

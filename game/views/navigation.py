@@ -6,6 +6,7 @@ from __future__ import annotations
 from typing import Protocol
 
 import arcade
+
 from polygolf.game.session import HoleResult
 
 

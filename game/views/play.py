@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 
 import arcade
+
 from polygolf.engine.golf.play import HolePlay
 from polygolf.game.drawing import HUD_HEIGHT, BallArt, HoleArt, draw_arrow, fit_camera
 from polygolf.game.session import Game, Round

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import arcade
 from arcade.gui import UIAnchorLayout, UIBoxLayout, UIView
+
 from polygolf.game.session import Game, Round
 from polygolf.game.views.navigation import Navigator
 from polygolf.game.views.widgets import themed_button, title

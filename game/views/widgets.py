@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import arcade
 from arcade.gui import UIFlatButton
+
 from polygolf.game.theme import Theme
 
 

@@ -7,10 +7,10 @@ from types import SimpleNamespace
 import esper
 
 from polygolf.engine.assembly.assemble import make_wall
-from polygolf.engine.assembly.resources import Resources, StaticWorld, StepConfig
 from polygolf.engine.assembly.simulation import Simulation
 from polygolf.engine.assembly.stages import stages_for
 from polygolf.engine.components import Material
+from polygolf.engine.components.resources import Resources, StaticWorld, StepConfig
 from polygolf.engine.loading.scene import build_scene, load_scene
 from polygolf.engine.physics.grid import SpatialGrid
 from polygolf.engine.physics.presets import preset

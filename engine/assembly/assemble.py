@@ -9,11 +9,11 @@ from collections.abc import Iterable, Sequence
 import esper
 
 from polygolf.engine.assembly.effects import effects_for
-from polygolf.engine.assembly.resources import Resources, StaticWorld, StepConfig
 from polygolf.engine.assembly.simulation import Simulation
 from polygolf.engine.assembly.spec import WorldSpec
 from polygolf.engine.assembly.stages import stages_for
 from polygolf.engine.components import Body, Collider, Material, Name, Wall
+from polygolf.engine.components.resources import Resources, StaticWorld, StepConfig
 from polygolf.engine.physics import polygon
 from polygolf.engine.physics.grid import SpatialGrid
 from polygolf.engine.physics.mass import mass_properties

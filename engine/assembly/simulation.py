@@ -9,8 +9,8 @@ from dataclasses import dataclass, field
 
 import esper
 
-from polygolf.engine.assembly.resources import Resources
 from polygolf.engine.components import Body
+from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.presets import Knobs
 
 

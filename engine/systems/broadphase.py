@@ -1,7 +1,7 @@
 import esper
 
-from polygolf.engine.assembly.resources import Resources
 from polygolf.engine.components import Body, Collider
+from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.grid import SpatialGrid
 from polygolf.engine.physics.settings import CONTACT_MARGIN
 

@@ -1,7 +1,7 @@
 import esper
 
-from polygolf.engine.assembly.resources import Resources
 from polygolf.engine.components import Bumper
+from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 
 LIT_SECONDS = 0.25

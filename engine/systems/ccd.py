@@ -2,8 +2,8 @@ import math
 
 import esper
 
-from polygolf.engine.assembly.resources import Resources
 from polygolf.engine.components import Body, Collider, Wall
+from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.settings import LINEAR_SLOP, TOI_TARGET
 from polygolf.engine.physics.toi import time_of_impact
 

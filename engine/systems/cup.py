@@ -2,8 +2,8 @@ import math
 
 import esper
 
-from polygolf.engine.assembly.resources import Resources
 from polygolf.engine.components import Ball, Body, Cup
+from polygolf.engine.components.resources import Resources
 
 
 class CupProcessor(esper.Processor):

@@ -2,8 +2,8 @@ import math
 
 import esper
 
-from polygolf.engine.assembly.resources import Resources
 from polygolf.engine.components import Body, Drag
+from polygolf.engine.components.resources import Resources
 
 
 def decay(value: float, rate: float, resistance: float, dt: float) -> float:

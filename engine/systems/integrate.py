@@ -1,7 +1,7 @@
 import esper
 
-from polygolf.engine.assembly.resources import Resources
 from polygolf.engine.components import Body, Drag
+from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.settings import REST_ANGULAR, REST_LINEAR, REST_SPEED_CAP, TIME_TO_REST
 
 

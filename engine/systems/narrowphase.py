@@ -1,7 +1,7 @@
 import esper
 
-from polygolf.engine.assembly.resources import Resources
 from polygolf.engine.components import Body, Collider, Wall
+from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.contact import Manifold, add_manifolds, collide_pieces, combine
 from polygolf.engine.physics.settings import CONTACT_MARGIN
 

@@ -1,6 +1,6 @@
 import esper
 
-from polygolf.engine.assembly.resources import Resources
+from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics import solver
 
 

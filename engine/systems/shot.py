@@ -1,7 +1,7 @@
 import esper
 
-from polygolf.engine.assembly.resources import Resources
 from polygolf.engine.components import Ball, Body, Collider, ShotInput
+from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.shot import shot_velocity
 
 

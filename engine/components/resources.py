@@ -1,4 +1,4 @@
-"""A simulation's resources (Bevy's word): state that belongs to the world, not to an entity, split
+"""A simulation's resources (Bevy's word): plain data that belongs to the world, not to an entity, split
 by who writes it, so a processor's constructor shows what it reads and writes."""
 
 from __future__ import annotations

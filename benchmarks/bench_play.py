@@ -18,6 +18,7 @@ import arcade
 
 from polygolf.engine.golf.golfer import golfer_for
 from polygolf.engine.golf.holes import find_course
+from polygolf.game.flow import ScreenFlow
 from polygolf.game.session import Game
 from polygolf.game.views.play import PlayView
 
@@ -37,8 +38,9 @@ def main() -> None:
           f"renderer: {window.ctx.info.RENDERER}")
     print(f"{'hole':<18}{'frame ms':>10}{'fps':>8}{'draw ms':>9}{'physics us':>12}{'p95 physics us':>16}")
     all_frames, all_physics = [], []
+    flow = ScreenFlow(window, game)
     for number in range(1, len(game.course.holes) + 1):
-        view = PlayView(game, game.start_round(number - 1))
+        view = PlayView(game, game.start_round(number - 1), flow)
         window.show_view(view)
         world = view.world
         golfer = golfer_for(world.hole)

@@ -17,10 +17,10 @@ from polygolf.engine.systems.launch import LaunchProcessor
 from polygolf.engine.systems.scoring import ScoringProcessor
 from polygolf.engine.systems.shot import ShotProcessor
 
+from .helpers import resources as ctx
+
 SQUARE = polygon.normalise(polygon.regular_polygon(4, 0.45))[0]
 
-
-from .helpers import resources as ctx
 
 
 def ball_entity(asleep=True, **state):

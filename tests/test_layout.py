@@ -103,8 +103,8 @@ def test_engine_layers_import_only_downwards(name):
         layer = _layer(target)
         if layer is not None:
             assert LAYERS.index(layer) <= mine, f"{name} ({LAYERS[mine]}) imports {target} ({layer}), a layer above"
-    third_party = {t.split(".")[0] for t in imports(name)}
-    assert not third_party & THIRD_PARTY_BELOW[_layer(name)], f"{name} imports {third_party & THIRD_PARTY_BELOW[_layer(name)]}"
+    forbidden = {t.split(".")[0] for t in imports(name)} & THIRD_PARTY_BELOW[_layer(name)]
+    assert not forbidden, f"{name} imports {forbidden}"
 
 
 def test_no_screen_imports_another():

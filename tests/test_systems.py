@@ -22,10 +22,10 @@ from polygolf.engine.systems.resolve import ResolveProcessor
 from polygolf.engine.systems.restitution import RestitutionProcessor
 from polygolf.engine.systems.spin import SpinProcessor
 
+from .helpers import resources as context
+
 SQUARE = polygon.normalise(polygon.regular_polygon(4, 0.5))[0]
 
-
-from .helpers import resources as context
 
 
 def box(cx, cy, hx, hy):

@@ -24,6 +24,7 @@ from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from polygolf.engine.assembly.stages import STAGES
 from polygolf.engine.golf.golfer import golfer_for
 from polygolf.engine.golf.holes import find_course, load_courses
 from polygolf.engine.golf.play import HolePlay
@@ -471,9 +472,10 @@ def _markdown(rows: list[Row], cases: list[Case], effects: dict[str, float] | No
         lines += ["", "## Cost of each system", "",
                   "µs per 60 Hz frame at `balanced`, each processor timed on its own while the scripted golfer",
                   "plays every hole of Meadow and Hazards (a system is only counted on holes that have it).", "",
-                  "| system | µs per frame |", "|---|---|"]
-        for name, us in sorted(effects.items(), key=lambda kv: -kv[1]):
-            lines.append(f"| {name} | {us:.1f} |")
+                  "| system (in the stage table's order) | µs per frame |", "|---|---|"]
+        for stage in STAGES:
+            if stage.name in effects:
+                lines.append(f"| {stage.name} | {effects[stage.name]:.1f} |")
     lines += ["", f"All {len(rows)} settings are in `accuracy.csv` (with every case's error: "
               + ", ".join(names) + ")."]
     return "\n".join(lines) + "\n"

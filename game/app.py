@@ -60,11 +60,13 @@ def _game_for(course: str, hole: int, theme: str | None, shape: str | None):
     from polygolf.game.theme import find_theme
 
     game = Game.load()
+    if not game.courses:
+        raise ValueError(game.problems[0] if game.problems else "no course could be read")
     game.course_index = game.courses.index(find_course(game.courses, course))
     if theme:
         game.theme_index = game.themes.index(find_theme(game.themes, theme))
-    if shape:
-        game.set_shape(*parse_shape(shape))
+    if shape is not None:
+        game.set_shape(*(parse_shape(shape) if isinstance(shape, str) else shape))
     if not 1 <= hole <= len(game.course.holes):
         raise ValueError(f"{game.course.name} has holes 1 to {len(game.course.holes)}")
     return game

@@ -8,26 +8,84 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
+import time
 from collections.abc import Sequence
+from pathlib import Path
+from typing import NoReturn
 
 from polygolf import __version__
-from polygolf.engine.loading.paths import CONTENT_DIR
+from polygolf.engine.loading.limits import MAX_SECONDS
+from polygolf.engine.loading.paths import content_roots
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.engine.physics.presets import PRESETS
 
 EXIT_CONTENT = 2
+PROGRESS_AFTER = 2.0  # s of wall time before `simulate` shows its progress on a terminal
+
+
+class Parser(argparse.ArgumentParser):
+    """argparse that refuses a bad argument in one line (no usage block), exit status 2."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(EXIT_CONTENT, f"{self.prog}: {message}\n")
+
+
+def seconds_arg(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    if not (math.isfinite(value) and 0.0 < value <= MAX_SECONDS):
+        raise argparse.ArgumentTypeError(f"{text} is not in 0 < seconds <= {MAX_SECONDS:g}")
+    return value
+
+
+def shape_arg(text: str) -> tuple[str, object]:
+    from polygolf.game.shapes import parse_shape
+
+    try:
+        return parse_shape(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def png_arg(text: str) -> Path:
+    if not text.lower().endswith(".png"):
+        raise argparse.ArgumentTypeError(f"{text!r} is not a .png file")
+    return Path(text)
+
+
+def finite_json(value):
+    """The report with every non-finite number as null: `--json` is always strict JSON."""
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {k: finite_json(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [finite_json(v) for v in value]
+    return value
 
 
 def _simulate(args: argparse.Namespace) -> int:
     from polygolf.engine.loading.scene import build_scene, load_scene
 
     scene = load_scene(args.scene)
+    frames = round(args.seconds * 60)
     with build_scene(scene, args.preset) as sim:
-        sim.run(args.seconds)
-        report = sim.report()
+        started = time.perf_counter()
+        shown = False
+        for done in range(0, frames, 60):
+            sim.step(min(60, frames - done))
+            if sys.stderr.isatty() and time.perf_counter() - started > PROGRESS_AFTER:
+                print(f"\rsimulate: {(done + 60) / 60:.0f} of {args.seconds:g} s", end="", file=sys.stderr)
+                shown = True
+        if shown:
+            print(file=sys.stderr)
+        report = finite_json(sim.report())
     if args.json:
-        print(json.dumps(report))
+        print(json.dumps(report, allow_nan=False))
         return 0
     m = report["metrics"]
     print(f"{report['scene']}: {report['steps']} frames at {report['preset']} ({', '.join(report['systems'])})")
@@ -40,13 +98,17 @@ def _simulate(args: argparse.Namespace) -> int:
     return 0
 
 
+def _count(n: int, word: str) -> str:
+    return f"{n} {word}{'' if n == 1 else 's'}"
+
+
 def _validate(args: argparse.Namespace) -> int:
     from polygolf.game.tools.validate import validate_paths
 
-    count, problems = validate_paths(args.paths or [CONTENT_DIR])
+    count, problems = validate_paths(args.paths or content_roots())
     for problem in problems:
         print(problem, file=sys.stderr)
-    print(f"{count} files checked, {len(problems)} problem{'s' if len(problems) != 1 else ''}")
+    print(f"{_count(count, 'file')} checked, {_count(len(problems), 'problem')}")
     return 1 if problems else 0
 
 
@@ -74,11 +136,18 @@ def _play(args: argparse.Namespace) -> int:
 
 
 def _render(args: argparse.Namespace) -> int:
-    from pathlib import Path
-
     from polygolf.game.app import render_hole
 
-    out = _window(render_hole, args.course, args.hole, args.theme, args.shape, Path(args.out))
+    try:
+        args.out.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        print(f"polygolf: --out: cannot make the folder {args.out.parent}: {exc.strerror}", file=sys.stderr)
+        return EXIT_CONTENT
+    try:
+        out = _window(render_hole, args.course, args.hole, args.theme, args.shape, args.out)
+    except OSError as exc:
+        print(f"polygolf: --out: cannot write {args.out}: {exc.strerror or exc}", file=sys.stderr)
+        return EXIT_CONTENT
     if out == 0:
         print(args.out)
     return out
@@ -115,13 +184,14 @@ def _explain(args: argparse.Namespace) -> int:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="polygolf", description="Mini golf with a polygon for a ball.")
+    parser = Parser(prog="polygolf", description="Mini golf with a polygon for a ball.")
     parser.add_argument("--version", action="version", version=f"polygolf {__version__}")
     sub = parser.add_subparsers(dest="command", description="with no command, the game opens at its menu")
 
     sim = sub.add_parser("simulate", help="run a physics scene headless and report the result")
     sim.add_argument("scene", help="scene YAML file")
-    sim.add_argument("--seconds", type=float, default=2.0, help="simulated time (default 2)")
+    sim.add_argument("--seconds", type=seconds_arg, default=2.0,
+                     help=f"simulated time, 0 < s <= {MAX_SECONDS:g} (default 2)")
     sim.add_argument("--preset", choices=list(PRESETS), default=None,
                      help="accuracy preset (default: the scene's, else balanced)")
     sim.add_argument("--json", action="store_true", help="print one JSON object")
@@ -131,7 +201,7 @@ def build_parser() -> argparse.ArgumentParser:
     play.add_argument("--course", default="meadow", help="course name (default meadow)")
     play.add_argument("--hole", type=int, default=1, help="hole number (default 1)")
     play.add_argument("--theme", default=None, help="grass, sand, night ...")
-    play.add_argument("--shape", default=None, help="pentagon, star-5-2, 7 (sides), random-SEED ...")
+    play.add_argument("--shape", type=shape_arg, default=None, help="pentagon, star-5-2, 7 (sides), random-SEED ...")
     play.add_argument("--preset", choices=list(PRESETS), default="balanced")
     play.set_defaults(run=_play)
 
@@ -139,11 +209,11 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument("course")
     render.add_argument("hole", type=int)
     render.add_argument("--theme", default=None)
-    render.add_argument("--shape", default=None)
-    render.add_argument("--out", required=True, help="PNG file to write")
+    render.add_argument("--shape", type=shape_arg, default=None)
+    render.add_argument("--out", type=png_arg, required=True, help="PNG file to write (folders are made)")
     render.set_defaults(run=_render)
 
-    val = sub.add_parser("validate", help="check content files (default: all of content/)")
+    val = sub.add_parser("validate", help="check content files (default: the shipped and your own content)")
     val.add_argument("paths", nargs="*", help="files or folders")
     val.set_defaults(run=_validate)
 

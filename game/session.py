@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from polygolf.engine.golf.holes import Course, Hole, load_courses
+from polygolf.engine.golf.holes import Course, Hole, load_all_courses
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.game.shapes import CATALOGUE
@@ -96,24 +96,30 @@ class Game:
     preset: str = "balanced"
     round: Round | None = None
     guide_seen: bool = False
+    problems: list[str] = field(default_factory=list)  # content that could not be read, for the menu
 
     @classmethod
     def load(cls) -> Game:
-        return cls(courses=load_courses(), themes=load_themes())
+        """The shipped and the player's content; what cannot be read is left out and reported."""
+        courses, course_problems = load_all_courses()
+        themes, theme_problems = load_themes()
+        return cls(courses=courses, themes=themes, problems=[str(p) for p in course_problems + theme_problems])
 
     @property
     def theme(self) -> Theme:
         return self.themes[self.theme_index]
 
     @property
-    def course(self) -> Course:
-        return self.courses[self.course_index]
+    def course(self) -> Course | None:
+        """The chosen course; None only when no course file could be read."""
+        return self.courses[self.course_index] if self.courses else None
 
     def next_theme(self) -> None:
         self.theme_index = (self.theme_index + 1) % len(self.themes)
 
     def next_course(self) -> None:
-        self.course_index = (self.course_index + 1) % len(self.courses)
+        if self.courses:
+            self.course_index = (self.course_index + 1) % len(self.courses)
 
     def next_shape(self) -> None:
         labels = [label for label, _ in CATALOGUE]

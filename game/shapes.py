@@ -5,7 +5,10 @@ from __future__ import annotations
 import random
 import re
 
+from pydantic import ValidationError
+
 from polygolf.engine.loading.scene import ShapeSpec
+from polygolf.engine.physics.polygon import MAX_SIDES, MIN_SIDES
 
 CATALOGUE: list[tuple[str, ShapeSpec]] = [
     ("Triangle", ShapeSpec(regular=3, radius=1.0)),
@@ -14,7 +17,9 @@ CATALOGUE: list[tuple[str, ShapeSpec]] = [
     ("Hexagon", ShapeSpec(regular=6, radius=1.0)),
     ("Heptagon", ShapeSpec(regular=7, radius=1.0)),
     ("Octagon", ShapeSpec(regular=8, radius=1.0)),
+    ("Nonagon", ShapeSpec(regular=9, radius=1.0)),
     ("Decagon", ShapeSpec(regular=10, radius=1.0)),
+    ("Hendecagon", ShapeSpec(regular=11, radius=1.0)),
     ("Dodecagon", ShapeSpec(regular=12, radius=1.0)),
     ("Star {5/2}", ShapeSpec(star=(5, 2), radius=1.0)),
     ("Star {7/2}", ShapeSpec(star=(7, 2), radius=1.0)),
@@ -38,12 +43,22 @@ def parse_shape(text: str) -> tuple[str, ShapeSpec]:
         slug = re.sub(r"[^a-z0-9]+", "-", label.lower()).strip("-")
         if key in (label.lower(), slug):
             return label, spec
+    try:
+        if key.isdigit() and len(key) < 4:
+            sides = int(key)
+            return f"{sides}-gon", ShapeSpec(regular=sides, radius=1.0)
+        match = re.fullmatch(r"random-(\d{1,18})", key)
+        if match:
+            seed = int(match.group(1))
+            return f"Random #{seed}", ShapeSpec(random={"seed": seed, "vertices": 4 + seed % 6}, radius=1.0)
+        match = re.fullmatch(r"star-(\d{1,2})-(\d{1,2})", key)
+        if match:
+            p, q = int(match.group(1)), int(match.group(2))
+            return f"Star {{{p}/{q}}}", ShapeSpec(star=(p, q), radius=1.0)
+    except ValidationError as exc:
+        reason = exc.errors(include_url=False)[0]["msg"].removeprefix("Value error, ")
+        raise ValueError(f"shape {text!r}: {reason}") from None
     if key.isdigit():
-        sides = int(key)
-        return f"{sides}-gon", ShapeSpec(regular=sides, radius=1.0)
-    match = re.fullmatch(r"random-(\d+)", key)
-    if match:
-        seed = int(match.group(1))
-        return f"Random #{seed}", ShapeSpec(random={"seed": seed, "vertices": 4 + seed % 6}, radius=1.0)
+        raise ValueError(f"shape {text!r}: a polygon has {MIN_SIDES} to {MAX_SIDES} sides")
     names = ", ".join(re.sub(r"[^a-z0-9]+", "-", label.lower()).strip("-") for label, _ in CATALOGUE)
     raise ValueError(f"unknown shape {text!r}; try one of: {names}, a side count, or random-SEED")

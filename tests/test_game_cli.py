@@ -11,6 +11,7 @@ import numpy as np
 from PIL import Image
 
 from polygolf.game.cli import main
+from polygolf.game.theme import Theme
 
 
 def run(*args, env_changes=None, drop=("DISPLAY", "WAYLAND_DISPLAY", "ARCADE_HEADLESS")):
@@ -54,5 +55,7 @@ def test_validate_passes_on_shipped_content_and_fails_on_broken(tmp_path, capsys
     (bad / "ugly.yaml").write_text("name: Ugly\nbackground: green\n")
     assert main(["validate", str(bad)]) == 1
     err = capsys.readouterr().err.strip().splitlines()
-    assert err == [f"{bad / 'ugly.yaml'}:2: background: String should match pattern "
-                   "'^#([0-9a-fA-F]{6}|[0-9a-fA-F]{8})$'"]
+    # Every problem of the file, the bad colour first, then each colour it lacks.
+    assert err[0] == f"{bad / 'ugly.yaml'}:2: background: a colour is \"#RRGGBB\" or \"#RRGGBBAA\", got 'green'"
+    missing = [name for name in Theme.model_fields if name not in ("name", "background")]
+    assert err[1:] == [f"{bad / 'ugly.yaml'}:1: {name}: missing (required)" for name in missing]

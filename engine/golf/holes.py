@@ -9,7 +9,7 @@ from pathlib import Path
 
 from polygolf.engine.golf.layout import HoleLayout, layout_hole, point_clearance, tile_path
 from polygolf.engine.loading.course import CoursesFile, HoleSpec, ParsedHole, TileLibrary, load_library, parse_hole
-from polygolf.engine.loading.paths import HOLES_DIR
+from polygolf.engine.loading.paths import HOLES_DIR, content_roots
 from polygolf.engine.loading.yamlsource import ContentError, format_loc, line_of, load_yaml, validate
 from polygolf.engine.physics.polygon import bounding_radius
 
@@ -67,10 +67,12 @@ class Course:
 
 
 def load_courses(path: str | Path | None = None, library: TileLibrary | None = None) -> list[Course]:
-    """Every course with its holes. A broken hole is kept as its ContentError so the rest of the
-    course plays; an unknown hole name is such an error too."""
+    """Every course of a courses file with its holes. A broken hole is kept as its ContentError so
+    the rest of the course plays; an unknown hole name is such an error too. Holes are files beside
+    the courses file; the library is the one beside it too, else the shipped one."""
     path = Path(path or HOLES_DIR / "courses.yaml")
-    library = library or load_library(path.parent / "tiles.yaml")
+    beside = path.parent / "tiles.yaml"
+    library = library or load_library(beside if beside.exists() else None)
     data, lines = load_yaml(path)
     spec = validate(CoursesFile, data, lines, path)
     courses = []
@@ -89,6 +91,21 @@ def load_courses(path: str | Path | None = None, library: TileLibrary | None = N
                 loaded.holes.append(exc)
         courses.append(loaded)
     return courses
+
+
+def load_all_courses() -> tuple[list[Course], list[ContentError]]:
+    """The courses of every content folder (shipped, then the player's), and the problems of any
+    courses or library file that could not be read at all (their courses are left out)."""
+    courses: list[Course] = []
+    problems: list[ContentError] = []
+    for root in content_roots():
+        path = root / "holes" / "courses.yaml"
+        if path.exists():
+            try:
+                courses += load_courses(path)
+            except ContentError as exc:
+                problems.append(exc)
+    return courses, problems
 
 
 def find_course(courses: list[Course], name: str) -> Course:

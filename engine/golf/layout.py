@@ -72,7 +72,7 @@ def layout_hole(spec: HoleSpec, lib: TileLibrary) -> HoleLayout:
     lines: dict[tuple[str, int], list[tuple[float, float]]] = defaultdict(list)
     for tile in spec.tiles:
         c, r = tile.at
-        borders = lib.border_sets[tile.borders]
+        borders = lib.resolve(tile.borders)
         for side in SIDES:
             dx, dy = STEP[side]
             neighbour = placed.get((c + dx, r + dy))
@@ -80,7 +80,7 @@ def layout_hole(spec: HoleSpec, lib: TileLibrary) -> HoleLayout:
                 continue  # a shared side is laid out once, from the tile to its west or south
             kind = getattr(borders, side)
             if neighbour is not None:
-                kind = _narrower(kind, getattr(lib.border_sets[neighbour.borders], OPPOSITE[side]))
+                kind = _narrower(kind, getattr(lib.resolve(neighbour.borders), OPPOSITE[side]))
             if side in ("e", "w"):
                 key, start = ("v", c + (1 if side == "e" else 0)), r * size
             else:
@@ -160,7 +160,7 @@ def tile_path(spec: HoleSpec, lib: TileLibrary) -> list[TileStep] | None:
         if at == goal:
             break
         for side in SIDES:
-            if getattr(lib.border_sets[index[at].borders], side) == "wall":
+            if getattr(lib.resolve(index[at].borders), side) == "wall":
                 continue
             nxt = (at[0] + STEP[side][0], at[1] + STEP[side][1])
             if nxt in index and nxt not in came:

@@ -12,10 +12,32 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated, Literal
 
-from pydantic import Field, Strict, model_validator
+from pydantic import Field, model_validator
 
+from polygolf.engine.loading.limits import (
+    MAX_CUP_SPEED,
+    MAX_ENTRIES,
+    MAX_ITEMS,
+    MAX_KICK,
+    MAX_LAUNCH_EVERY,
+    MAX_PUSH,
+    MAX_TILE,
+    MAX_TILE_INDEX,
+    MAX_TILES,
+    MAX_WINDMILL,
+    MIN_TILE,
+    Density,
+    FileName,
+    Friction,
+    Key,
+    Name,
+    Restitution,
+    Speed,
+    count,
+    finite,
+)
 from polygolf.engine.loading.paths import HOLES_DIR
-from polygolf.engine.loading.scene import Count, DragSpec, NonNegative, Number, Point, Positive, Strict_, WallSpec
+from polygolf.engine.loading.scene import DragSpec, Strict_, WallSpec
 from polygolf.engine.loading.yamlsource import ContentError, Loc, format_loc, line_of, load_yaml, validate
 
 SIDES = ("n", "e", "s", "w")
@@ -24,7 +46,7 @@ OPPOSITE = {"n": "s", "e": "w", "s": "n", "w": "e"}
 
 
 class Gate(Strict_):
-    gate: Positive  # clear width of the opening, m, centred on the side
+    gate: finite(hi=MAX_TILE, gt=0.0)  # clear width of the opening, m, centred on the side
 
 
 Side = Literal["open", "wall"] | Gate
@@ -52,9 +74,10 @@ class PatternItem(WallSpec):
     or a special obstacle (bumper, windmill), shaped by `box` or `polygon` in tile coordinates."""
 
     hazard: Hazard = "wall"
-    push: Point | None = None  # slope: m/s², in tile coordinates (turns with the tile)
-    kick: Positive | None = None  # bumper: m/s added to each rebound
-    speed: Number | None = None  # windmill: rad/s, counter-clockwise; it turns about its centroid
+    push: tuple[finite(-MAX_PUSH, MAX_PUSH), finite(-MAX_PUSH, MAX_PUSH)] | None = None  # slope: m/s², in tile
+    # coordinates (turns with the tile)
+    kick: finite(hi=MAX_KICK, gt=0.0) | None = None  # bumper: m/s added to each rebound
+    speed: finite(-MAX_WINDMILL, MAX_WINDMILL) | None = None  # windmill: rad/s, counter-clockwise, about its centroid
 
     @model_validator(mode="after")
     def _parameters(self) -> PatternItem:
@@ -69,59 +92,76 @@ class PatternItem(WallSpec):
 
 
 class BallSpec(Strict_):
-    radius: Positive = 0.35
-    density: Positive = 1.0
-    restitution: NonNegative = 0.6
-    friction: NonNegative = 0.3
+    radius: finite(0.05, MAX_TILE / 4) = 0.35
+    density: Density = 1.0
+    restitution: Restitution = 0.6
+    friction: Friction = 0.3
 
 
 class CupSpec(Strict_):
-    radius: Positive = 0.45
-    max_speed: Positive = 4.0  # m/s at the centre, falling linearly to zero at the rim
+    radius: finite(0.05, MAX_TILE / 4) = 0.45
+    max_speed: finite(hi=MAX_CUP_SPEED, gt=0.0) = 4.0  # m/s at the centre, falling linearly to zero at the rim
 
 
 class TileLibrary(Strict_):
-    tile_size: Positive = 6.0
-    wall_thickness: Positive = 0.3
-    max_strokes: Annotated[int, Strict(), Field(ge=1, le=99)] = 10
+    tile_size: finite(MIN_TILE, MAX_TILE) = 6.0
+    wall_thickness: finite(0.01, MAX_TILE / 4) = 0.3
+    max_strokes: count(1, 99) = 10
     ball: BallSpec = BallSpec()
     green: DragSpec = DragSpec(linear=0.4, angular=1.0, rolling=1.2, rolling_angular=2.0)
     cup: CupSpec = CupSpec()
-    border_sets: dict[str, BorderSet]
-    patterns: dict[str, list[PatternItem]]
+    border_sets: Annotated[dict[Key, BorderSet], Field(max_length=MAX_ENTRIES)]
+    patterns: Annotated[dict[Key, Annotated[list[PatternItem], Field(max_length=MAX_ITEMS)]],
+                        Field(max_length=MAX_ENTRIES)]
+
+    @model_validator(mode="after")
+    def _sizes_fit_a_tile(self) -> TileLibrary:
+        quarter = self.tile_size / 4
+        for what, value in (("wall_thickness", self.wall_thickness), ("ball.radius", self.ball.radius),
+                            ("cup.radius", self.cup.radius)):
+            if value > quarter:
+                raise ValueError(f"{what} {value:g} m is more than a quarter of the tile ({quarter:g} m)")
+        return self
+
+    def resolve(self, borders: str | BorderSet) -> BorderSet:
+        """A tile's border set: by name from the library, or given inline."""
+        return self.border_sets[borders] if isinstance(borders, str) else borders
+
+
+TileIndex = count(-MAX_TILE_INDEX, MAX_TILE_INDEX)
 
 
 class TilePlacement(Strict_):
-    at: tuple[Count, Count]  # [column, row]; row grows upwards
-    borders: str
-    pattern: str = "empty"
+    at: tuple[TileIndex, TileIndex]  # [column, row]; row grows upwards
+    borders: Key | BorderSet | None = None  # a library name, inline sides, or omitted: open toward neighbours
+    pattern: Key = "empty"
     rotate: Literal[0, 90, 180, 270] = 0  # turns the pattern (not the borders), degrees
 
 
 class Launch(Strict_):
     """For the collision test level: the ball leaves the tee at this velocity, again every `every` s."""
 
-    velocity: Point
-    every: Positive = 5.0
+    velocity: tuple[Speed, Speed]
+    every: finite(0.1, MAX_LAUNCH_EVERY) = 5.0
 
 
 class HoleSpec(Strict_):
-    name: str
-    par: Annotated[int, Strict(), Field(ge=1, le=20)]
-    max_strokes: Annotated[int, Strict(), Field(ge=1, le=99)] | None = None
-    tiles: Annotated[list[TilePlacement], Field(min_length=1)]
+    name: Name
+    par: count(1, 20)
+    max_strokes: count(1, 99) | None = None
+    tiles: Annotated[list[TilePlacement], Field(min_length=1, max_length=MAX_TILES)]
     green: DragSpec | None = None  # overrides the library's
     launch: Launch | None = None
     effects: list[HoleEffect] | None = None  # omitted: what the hole's content needs
 
 
 class CourseSpec(Strict_):
-    name: str
-    holes: Annotated[list[str], Field(min_length=1)]
+    name: Name
+    holes: Annotated[list[FileName], Field(min_length=1, max_length=MAX_ENTRIES)]  # hole files beside courses.yaml
 
 
 class CoursesFile(Strict_):
-    courses: Annotated[list[CourseSpec], Field(min_length=1)]
+    courses: Annotated[list[CourseSpec], Field(min_length=1, max_length=MAX_ENTRIES)]
 
 
 # --- loading ----------------------------------------------------------------------------------------
@@ -149,35 +189,64 @@ class ParsedHole:
 
 def parse_hole(path: str | Path, library: TileLibrary) -> ParsedHole:
     """Load a hole file and check it against the library: names exist, tiles do not overlap, open
-    sides meet open sides. (Geometry — reachability, tee and cup — is golf's: `golf.holes`.)"""
+    sides meet open sides; tiles without `borders` open toward their neighbours. Every problem is
+    reported, not only the first. (Geometry — reachability, tee and cup — is golf's: `golf.holes`.)"""
     path = Path(path)
     data, lines = load_yaml(path)
     parsed = ParsedHole(path, validate(HoleSpec, data, lines, path), lines)
     spec, fail = parsed.spec, parsed.error
+    problems: list[ContentError] = []
 
     placed: dict[tuple[int, int], int] = {}
     for i, tile in enumerate(spec.tiles):
-        if tile.borders not in library.border_sets:
-            raise fail(("tiles", i, "borders"), f"unknown border set {tile.borders!r}")
+        if isinstance(tile.borders, str) and tile.borders not in library.border_sets:
+            problems.append(fail(("tiles", i, "borders"), f"unknown border set {tile.borders!r}"))
         if tile.pattern not in library.patterns:
-            raise fail(("tiles", i, "pattern"), f"unknown pattern {tile.pattern!r}")
+            problems.append(fail(("tiles", i, "pattern"), f"unknown pattern {tile.pattern!r}"))
         if tile.at in placed:
-            raise fail(("tiles", i, "at"), f"tile {list(tile.at)} is already used by tiles[{placed[tile.at]}]")
-        placed[tile.at] = i
+            problems.append(fail(("tiles", i, "at"), f"tile {list(tile.at)} is already used by "
+                                                     f"tiles[{placed[tile.at]}]"))
+        else:
+            placed[tile.at] = i
+    if problems:
+        raise ContentError.of(problems)
 
+    parsed.spec = spec = spec.model_copy(update={"tiles": _derive_borders(spec, library, placed)})
     for i, tile in enumerate(spec.tiles):
-        borders = library.border_sets[tile.borders]
+        borders = library.resolve(tile.borders)
         for side in SIDES:
-            mine = getattr(borders, side)
-            if mine == "wall":
+            if getattr(borders, side) == "wall":
                 continue
             dx, dy = STEP[side]
             j = placed.get((tile.at[0] + dx, tile.at[1] + dy))
             if j is None:
-                raise fail(("tiles", i, "borders"), f"side {side} of {tile.borders!r} opens onto no tile: "
-                                                    "the ball could leave the hole")
-            theirs = getattr(library.border_sets[spec.tiles[j].borders], OPPOSITE[side])
-            if theirs == "wall":
-                raise fail(("tiles", i, "borders"), f"side {side} is open but tiles[{j}] walls its side "
-                                                    f"{OPPOSITE[side]}")
+                problems.append(fail(("tiles", i, "borders"), f"side {side} of {_name(tile.borders)} opens onto no "
+                                                              "tile: the ball could leave the hole"))
+            elif getattr(library.resolve(spec.tiles[j].borders), OPPOSITE[side]) == "wall":
+                problems.append(fail(("tiles", i, "borders"), f"side {side} is open but tiles[{j}] walls its side "
+                                                              f"{OPPOSITE[side]}"))
+    if problems:
+        raise ContentError.of(problems)
     return parsed
+
+
+def _name(borders: str | BorderSet) -> str:
+    return repr(borders) if isinstance(borders, str) else "the inline border set"
+
+
+def _derive_borders(spec: HoleSpec, library: TileLibrary, placed: dict[tuple[int, int], int]) -> list[TilePlacement]:
+    """Tiles without `borders` get a side open toward each neighbour that does not wall it off."""
+    tiles = list(spec.tiles)
+    for i, tile in enumerate(tiles):
+        if tile.borders is not None:
+            continue
+        sides = {}
+        for side in SIDES:
+            j = placed.get((tile.at[0] + STEP[side][0], tile.at[1] + STEP[side][1]))
+            if j is None:
+                continue
+            theirs = spec.tiles[j].borders
+            if theirs is None or getattr(library.resolve(theirs), OPPOSITE[side]) != "wall":
+                sides[side] = "open"
+        tiles[i] = tile.model_copy(update={"borders": BorderSet(**sides)})
+    return tiles

@@ -1,7 +1,10 @@
-"""Where content lives: the shipped package data, unless `POLYGOLF_CONTENT` points elsewhere.
+"""Where content and user data live.
 
-The shipped folder is found with importlib.resources, so a wheel installed anywhere finds it; the
-game reads it as plain files (an installed package is a folder on disk, not a zip).
+Content: the shipped package data (found with importlib.resources, so a wheel installed anywhere
+finds it; an installed package is a folder on disk, not a zip), unless `POLYGOLF_CONTENT` points
+elsewhere; then the player's own content folder, `DATA/content`, whose holes, courses and themes are
+added to the shipped ones. User data (DATA): the platform's user data folder (platformdirs), unless
+`POLYGOLF_DATA` points elsewhere.
 """
 
 from __future__ import annotations
@@ -9,6 +12,8 @@ from __future__ import annotations
 import os
 from importlib.resources import files
 from pathlib import Path
+
+from platformdirs import user_data_path
 
 
 def content_dir() -> Path:
@@ -21,3 +26,20 @@ CONTENT_DIR = content_dir()
 HOLES_DIR = CONTENT_DIR / "holes"
 THEMES_DIR = CONTENT_DIR / "themes"
 SCENES_DIR = CONTENT_DIR / "scenes"
+
+
+def data_dir() -> Path:
+    """The player's data folder: `POLYGOLF_DATA` if set, else the platform's user data folder."""
+    override = os.environ.get("POLYGOLF_DATA")
+    return Path(override) if override else user_data_path("polygolf", appauthor=False)
+
+
+def user_content_dir() -> Path:
+    """The player's own content (holes/, themes/), added to the shipped content."""
+    return data_dir() / "content"
+
+
+def content_roots() -> list[Path]:
+    """Every content folder, shipped first; the player's only if it exists."""
+    user = user_content_dir()
+    return [CONTENT_DIR] + ([user] if user.is_dir() and user.resolve() != CONTENT_DIR.resolve() else [])

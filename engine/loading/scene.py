@@ -10,21 +10,36 @@ import math
 from pathlib import Path
 from typing import Annotated, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, Strict, model_validator
+from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 from polygolf.engine.assembly.assemble import assemble
 from polygolf.engine.assembly.simulation import Simulation
 from polygolf.engine.assembly.spec import DynamicPart, WallPart, WorldSpec
 from polygolf.engine.components import Drag, Material
+from polygolf.engine.loading.limits import (
+    MAX_BODIES,
+    MAX_STAR_POINTS,
+    MAX_WALL_VERTICES,
+    MAX_WALLS,
+    Acceleration,
+    Angle,
+    Density,
+    Friction,
+    Half,
+    Name,
+    Point,
+    Radius,
+    Rate,
+    Restitution,
+    Seed,
+    Speed,
+    Spin,
+    count,
+)
 from polygolf.engine.loading.yamlsource import load
 from polygolf.engine.physics import polygon
 from polygolf.engine.physics.presets import PRESETS, Knobs
 
-Number = Annotated[float, Strict()]
-Positive = Annotated[float, Strict(), Field(gt=0)]
-NonNegative = Annotated[float, Strict(), Field(ge=0)]
-Count = Annotated[int, Strict()]
-Point = tuple[Number, Number]
 EFFECTS = ("drag", "gravity", "spin", "friction", "restitution", "ccd")
 Effect = Literal["drag", "gravity", "spin", "friction", "restitution", "ccd"]
 
@@ -34,18 +49,18 @@ class Strict_(BaseModel):
 
 
 class RandomShape(Strict_):
-    seed: Count
-    vertices: Annotated[int, Strict(), Field(ge=polygon.MIN_SIDES, le=polygon.MAX_SIDES)]
+    seed: Seed
+    vertices: count(polygon.MIN_SIDES, polygon.MAX_SIDES)
 
 
 class ShapeSpec(Strict_):
     """Exactly one of regular / star / vertices / random; `radius` for all but `vertices`."""
 
-    regular: Annotated[int, Strict(), Field(ge=polygon.MIN_SIDES, le=polygon.MAX_SIDES)] | None = None
-    star: tuple[Count, Count] | None = None
-    vertices: list[Point] | None = None
+    regular: count(polygon.MIN_SIDES, polygon.MAX_SIDES) | None = None
+    star: tuple[count(5, MAX_STAR_POINTS), count(2, MAX_STAR_POINTS // 2)] | None = None
+    vertices: Annotated[list[Point], Field(min_length=3, max_length=polygon.MAX_SIDES)] | None = None
     random: RandomShape | None = None
-    radius: Positive | None = None
+    radius: Radius | None = None
 
     @model_validator(mode="after")
     def _one_kind(self) -> ShapeSpec:
@@ -83,10 +98,10 @@ class ShapeSpec(Strict_):
 
 
 class DragSpec(Strict_):
-    linear: NonNegative = 0.0  # 1/s, exponential
-    angular: NonNegative = 0.0  # 1/s, exponential
-    rolling: NonNegative = 0.0  # m/s², constant deceleration
-    rolling_angular: NonNegative = 0.0  # rad/s², constant deceleration
+    linear: Rate = 0.0  # 1/s, exponential
+    angular: Rate = 0.0  # 1/s, exponential
+    rolling: Rate = 0.0  # m/s², constant deceleration
+    rolling_angular: Rate = 0.0  # rad/s², constant deceleration
 
     @property
     def any(self) -> bool:
@@ -94,22 +109,22 @@ class DragSpec(Strict_):
 
 
 class BodySpec(Strict_):
-    name: str
+    name: Name
     shape: ShapeSpec
-    angle: Number = 0.0  # degrees
+    angle: Angle = 0.0  # degrees
     position: Point
-    velocity: Point = (0.0, 0.0)
-    spin: Number = 0.0  # rad/s
-    density: Positive = 1.0
-    restitution: NonNegative = 0.5
-    friction: NonNegative = 0.2
+    velocity: tuple[Speed, Speed] = (0.0, 0.0)
+    spin: Spin = 0.0  # rad/s
+    density: Density = 1.0
+    restitution: Restitution = 0.5
+    friction: Friction = 0.2
     drag: DragSpec = DragSpec()
 
 
 class BoxSpec(Strict_):
     center: Point
-    half: tuple[Positive, Positive]
-    angle: Number = 0.0  # degrees
+    half: tuple[Half, Half]
+    angle: Angle = 0.0  # degrees
 
     def outline(self) -> list[tuple[float, float]]:
         (cx, cy), (hx, hy) = self.center, self.half
@@ -119,9 +134,9 @@ class BoxSpec(Strict_):
 
 class WallSpec(Strict_):
     box: BoxSpec | None = None
-    polygon: list[Point] | None = None
-    restitution: NonNegative = 1.0
-    friction: NonNegative = 1.0
+    polygon: Annotated[list[Point], Field(min_length=3, max_length=MAX_WALL_VERTICES)] | None = None
+    restitution: Restitution = 1.0
+    friction: Friction = 1.0
 
     @model_validator(mode="after")
     def _one_kind(self) -> WallSpec:
@@ -138,12 +153,12 @@ class WallSpec(Strict_):
 
 
 class Scene(Strict_):
-    name: str
+    name: Name
     preset: Literal[tuple(PRESETS)] | None = None  # type: ignore[valid-type]
     effects: list[Effect] | None = None
-    gravity: Point = (0.0, 0.0)  # m/s², a constant push on every body (a tilted table)
-    bodies: Annotated[list[BodySpec], Field(min_length=1)]
-    walls: list[WallSpec] = []
+    gravity: tuple[Acceleration, Acceleration] = (0.0, 0.0)  # m/s², a push on every body (a tilted table)
+    bodies: Annotated[list[BodySpec], Field(min_length=1, max_length=MAX_BODIES)]
+    walls: Annotated[list[WallSpec], Field(max_length=MAX_WALLS)] = []
 
     @model_validator(mode="after")
     def _unique_names(self) -> Scene:

@@ -1,28 +1,49 @@
 """YAML that remembers where each value came from, and validation errors that say so in one line.
 
 Content files are parsed to plain data plus a map from each value's path (("bodies", 0, "velocity"))
-to its line, then validated with pydantic; the first error becomes
-`file:line: field: message`, which is all an author needs to fix it.
+to its line, then validated with pydantic; every error becomes `file:line: field: message`, which is
+all an author needs to fix it.
+
+Nothing a file says gets past this module as anything but a ContentError: the size is checked before
+reading, the text must be UTF-8 without control characters, the event stream is checked for depth
+and size before anything is built (so no recursion runs deep), aliases are expanded against a budget
+(no "billion laughs") and may not refer to themselves, and only YAML's standard tags are accepted.
 """
 
 from __future__ import annotations
 
+import os
+import re
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any, TypeVar
 
 import yaml
 from pydantic import BaseModel, ValidationError
 
+from polygolf.engine.loading.limits import MAX_DEPTH, MAX_FILE_BYTES, MAX_NODES
+
 Loc = tuple[str | int, ...]
 M = TypeVar("M", bound=BaseModel)
+_STANDARD_TAGS = {f"tag:yaml.org,2002:{name}" for name in
+                  ("str", "int", "float", "bool", "null", "map", "seq", "timestamp", "binary", "merge")}
 
 
 class ContentError(ValueError):
-    """A content file that cannot be used; str() is the one-line message."""
+    """A content file that cannot be used; str() is the one-line message of the first problem, and
+    `problems` lists every one found (a file can have several)."""
 
     def __init__(self, file: str | Path, line: int, field: str, message: str) -> None:
         self.file, self.line, self.field, self.message = str(file), line, field, message
+        self.problems: list[ContentError] = [self]
         super().__init__(f"{self.file}:{line}: {field}: {message}")
+
+    @classmethod
+    def of(cls, problems: Sequence[ContentError]) -> ContentError:
+        """One error standing for several: raised, it reads as the first; `problems` has them all."""
+        first = problems[0]
+        first.problems = list(problems)
+        return first
 
 
 def format_loc(loc: Loc) -> str:
@@ -35,49 +56,119 @@ def format_loc(loc: Loc) -> str:
     return out or "(top level)"
 
 
-def _to_data(node: yaml.Node, loc: Loc, lines: dict[Loc, int], file: str) -> Any:
-    """Plain data of `node`; records the line of every key (where an author looks) and list item."""
-    if isinstance(node, yaml.MappingNode):
+class _Builder:
+    """Plain data from composed nodes, with the line of every key and list item."""
+
+    def __init__(self, file: str) -> None:
+        self.file = file
+        self.lines: dict[Loc, int] = {}
+        self.budget = MAX_NODES
+        self.active: set[int] = set()  # nodes being built: meeting one again is an alias to itself
+
+    def fail(self, node: yaml.Node, loc: Loc, message: str) -> ContentError:
+        return ContentError(self.file, node.start_mark.line + 1, format_loc(loc), message)
+
+    def build(self, node: yaml.Node, loc: Loc) -> Any:
+        self.budget -= 1
+        if self.budget < 0:
+            raise self.fail(node, loc, f"more than {MAX_NODES:,} values (aliases expanded): too large")
+        if node.tag not in _STANDARD_TAGS:
+            raise self.fail(node, loc, f"tag {node.tag} is not allowed (only YAML's standard types)")
+        if isinstance(node, yaml.ScalarNode):
+            return self.scalar(node, loc)
+        if id(node) in self.active:
+            raise self.fail(node, loc, "an alias refers to the value that contains it")
+        self.active.add(id(node))
+        try:
+            if isinstance(node, yaml.MappingNode):
+                return self.mapping(node, loc)
+            return self.sequence(node, loc)
+        finally:
+            self.active.discard(id(node))
+
+    def mapping(self, node: yaml.MappingNode, loc: Loc) -> dict[Any, Any]:
         out: dict[Any, Any] = {}
         for key_node, value_node in node.value:
-            key = _scalar(key_node) if isinstance(key_node, yaml.ScalarNode) else None
-            if not isinstance(key, str | int):
-                raise ContentError(file, key_node.start_mark.line + 1, format_loc(loc), "keys must be names")
+            key = self.scalar(key_node, loc) if isinstance(key_node, yaml.ScalarNode) else None
+            if not isinstance(key, str | int) or isinstance(key, bool):
+                raise self.fail(key_node, loc, "keys must be names")
             if key in out:
-                raise ContentError(file, key_node.start_mark.line + 1, format_loc((*loc, key)), "duplicate key")
-            lines[(*loc, key)] = key_node.start_mark.line + 1
-            out[key] = _to_data(value_node, (*loc, key), lines, file)
+                raise self.fail(key_node, (*loc, key), "duplicate key")
+            self.lines[(*loc, key)] = key_node.start_mark.line + 1
+            out[key] = self.build(value_node, (*loc, key))
         return out
-    if isinstance(node, yaml.SequenceNode):
+
+    def sequence(self, node: yaml.SequenceNode, loc: Loc) -> list[Any]:
         items = []
         for i, child in enumerate(node.value):
-            lines[(*loc, i)] = child.start_mark.line + 1
-            items.append(_to_data(child, (*loc, i), lines, file))
+            self.lines[(*loc, i)] = child.start_mark.line + 1
+            items.append(self.build(child, (*loc, i)))
         return items
-    return _scalar(node)
+
+    def scalar(self, node: yaml.Node, loc: Loc) -> Any:
+        try:
+            return yaml.constructor.SafeConstructor().construct_object(node, deep=True)
+        except (yaml.YAMLError, ValueError, OverflowError) as exc:
+            raise self.fail(node, loc, f"not a valid value: {getattr(exc, 'problem', None) or exc}") from None
 
 
-def _scalar(node: yaml.Node) -> Any:
-    return yaml.constructor.SafeConstructor().construct_object(node, deep=True)
+def _check_events(text: str, file: str) -> None:
+    """Depth and size from the event stream, before a node is built (the composer recurses)."""
+    depth = events = 0
+    for event in yaml.parse(text, Loader=yaml.SafeLoader):
+        events += 1
+        if isinstance(event, yaml.CollectionStartEvent):
+            depth += 1
+            if depth > MAX_DEPTH:
+                raise ContentError(file, event.start_mark.line + 1, "(yaml)", f"nested more than {MAX_DEPTH} deep")
+        elif isinstance(event, yaml.CollectionEndEvent):
+            depth -= 1
+        if events > 2 * MAX_NODES:
+            raise ContentError(file, event.start_mark.line + 1, "(yaml)", f"more than {MAX_NODES:,} values")
+
+
+def read_text(path: str | Path) -> str:
+    """A content file's text: at most MAX_FILE_BYTES of UTF-8 without control characters."""
+    file = str(path)
+    try:
+        size = os.stat(path).st_size
+        if size > MAX_FILE_BYTES:
+            raise ContentError(file, 0, "(file)", f"{size:,} bytes: content files are at most "
+                                                  f"{MAX_FILE_BYTES // 1024} KiB")
+        data = Path(path).read_bytes()
+    except OSError as exc:
+        raise ContentError(file, 0, "(file)", exc.strerror or str(exc)) from None
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = data[:exc.start].count(b"\n") + 1
+        raise ContentError(file, line, "(file)", f"not UTF-8 text (byte 0x{data[exc.start]:02x})") from None
+    for number, line_text in enumerate(text.splitlines(), 1):
+        bad = next((c for c in line_text if (ord(c) < 32 and c != "\t") or 0x7F <= ord(c) < 0xA0
+                    or c in "\ufffe\uffff"), None)
+        if bad is not None:
+            raise ContentError(file, number, "(file)", f"control character U+{ord(bad):04X} in the text")
+    return text
 
 
 def load_yaml(path: str | Path) -> tuple[Any, dict[Loc, int]]:
     """Parse a YAML file to plain data and a map from value paths to 1-based line numbers."""
     file = str(path)
+    text = read_text(path)
     try:
-        text = Path(path).read_text(encoding="utf-8")
-    except OSError as exc:
-        raise ContentError(file, 0, "(file)", exc.strerror or str(exc)) from None
-    try:
+        _check_events(text, file)
         root = yaml.compose(text, Loader=yaml.SafeLoader)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         line = mark.line + 1 if mark else 0
         raise ContentError(file, line, "(yaml)", f"{exc.problem or exc}") from None
+    except yaml.YAMLError as exc:  # reader errors: unprintable characters the text check missed
+        raise ContentError(file, 0, "(yaml)", str(exc).splitlines()[0]) from None
     if root is None:
         return None, {(): 1}
-    lines: dict[Loc, int] = {(): root.start_mark.line + 1}
-    return _to_data(root, (), lines, file), lines
+    builder = _Builder(file)
+    builder.lines[()] = root.start_mark.line + 1
+    return builder.build(root, ()), builder.lines
 
 
 def line_of(loc: Loc, lines: dict[Loc, int]) -> int:
@@ -88,23 +179,49 @@ def line_of(loc: Loc, lines: dict[Loc, int]) -> int:
     return 1
 
 
+def _message(err: dict) -> str:
+    message = re.sub(r"a valid dictionary or instance of (\w+)", r"a mapping (\1)", err["msg"])
+    if message.startswith("Value error, "):
+        message = message[len("Value error, "):]
+    if err["type"] == "extra_forbidden":
+        message = "unknown key"
+    elif err["type"] == "missing":
+        message = "missing (required)"
+    elif "input" in err and err["type"].endswith("_type"):
+        shown = repr(err["input"])
+        message += f", got {shown if len(shown) <= 40 else shown[:37] + '...'}"
+    return message
+
+
+_TYPE_TAGS = {"str", "int", "float", "bool", "list", "tuple", "dict", "none", "set"}
+
+
+def _field_path(loc: tuple) -> Loc:
+    """pydantic's error location without its union-branch and validator tags (our fields are
+    snake_case; tags are class names, `type[...]`, `kind-of-check` or a type's name)."""
+    return tuple(p for p in loc if isinstance(p, int) or (p.islower() and "[" not in p and "-" not in p
+                                                          and p not in _TYPE_TAGS))
+
+
 def validate(model: type[M], data: Any, lines: dict[Loc, int], file: str | Path) -> M:
-    """Validate `data` into `model`, turning the first pydantic error into a ContentError."""
+    """Validate `data` into `model`; every pydantic error becomes a line of the ContentError. Where a
+    union's branches disagree, the deepest explanation wins ("n: should be 'open' or 'wall'" over
+    "should be a string")."""
     try:
         return model.model_validate(data)
     except ValidationError as exc:
-        err = exc.errors(include_url=False)[0]
-        loc = tuple(p for p in err["loc"] if not (isinstance(p, str) and p.startswith("function-")))
-        message = err["msg"]
-        if message.startswith("Value error, "):
-            message = message[len("Value error, "):]
-        if err["type"] == "extra_forbidden":
-            message = "unknown key"
-        elif err["type"] == "missing":
-            message = "missing (required)"
-        elif "input" in err and err["type"].endswith("_type"):
-            message += f", got {err['input']!r}"
-        raise ContentError(file, line_of(loc, lines), format_loc(loc), message) from None
+        found = [(_field_path(err["loc"]), err) for err in exc.errors(include_url=False)]
+        messages: dict[Loc, list[str]] = {}
+        for loc, err in found:
+            deeper = any(len(other) > len(loc) and other[:len(loc)] == loc for other, _ in found)
+            if deeper and err["type"].endswith("_type"):
+                continue
+            text = _message(err)
+            if text not in messages.setdefault(loc, []):
+                messages[loc].append(text)
+        problems = [ContentError(file, line_of(loc, lines), format_loc(loc), "; or ".join(texts))
+                    for loc, texts in messages.items()]
+        raise ContentError.of(problems) from None
 
 
 def load(model: type[M], path: str | Path) -> M:

@@ -7,14 +7,15 @@ from pathlib import Path
 
 from polygolf.engine.golf.holes import load_courses, load_hole
 from polygolf.engine.loading.course import load_library
-from polygolf.engine.loading.paths import CONTENT_DIR
+from polygolf.engine.loading.paths import content_roots
 from polygolf.engine.loading.scene import load_scene
 from polygolf.engine.loading.yamlsource import ContentError, load_yaml
 from polygolf.game.theme import load_theme
 
 
 def _library_for(path: Path):
-    return load_library(path.parent / "tiles.yaml")
+    beside = path.parent / "tiles.yaml"
+    return load_library(beside if beside.exists() else None)
 
 
 def check_file(path: Path) -> list[ContentError]:
@@ -25,7 +26,7 @@ def check_file(path: Path) -> list[ContentError]:
         if kind == "library":
             load_library(path)
         elif kind == "courses":
-            return [h for c in load_courses(path) for h in c.holes if isinstance(h, ContentError)]
+            return [p for c in load_courses(path) for h in c.holes if isinstance(h, ContentError) for p in h.problems]
         elif kind == "hole":
             load_hole(path, _library_for(path))
         elif kind == "scene":
@@ -36,7 +37,7 @@ def check_file(path: Path) -> list[ContentError]:
             load_yaml(path)
             return [ContentError(path, 1, "(file)", "not a known kind of content (tiles, courses, hole, scene, theme)")]
     except ContentError as exc:
-        return [exc]
+        return exc.problems
     return []
 
 
@@ -70,9 +71,9 @@ def content_files(paths: Iterable[str | Path]) -> list[Path]:
     return out
 
 
-def validate_paths(paths: Iterable[str | Path] = (CONTENT_DIR,)) -> tuple[int, list[ContentError]]:
+def validate_paths(paths: Iterable[str | Path] | None = None) -> tuple[int, list[ContentError]]:
     """(files checked, problems). A hole's problems are reported once, not again through its course."""
-    files = content_files(paths)
+    files = content_files(content_roots() if paths is None else paths)
     problems: list[ContentError] = []
     seen: set[str] = set()
     for path in files:

@@ -38,7 +38,7 @@ class MenuView(UIView):
             ("theme", f"Environment: {theme.name}", self.on_theme),
             ("shape", f"Polygon: {game.shape_label}", self.on_shape),
             ("random", "Random polygon", self.on_random),
-            ("course", f"Course: {game.course.name}", self.on_course),
+            ("course", f"Course: {game.course.name}" if game.course else "No course could be read", self.on_course),
             ("guide", "How to play", self.on_guide),
             ("quit", "Quit", self.on_quit),
         ):
@@ -51,10 +51,15 @@ class MenuView(UIView):
         self.ui.add(anchor)
         self.ball_art = BallArt(ball_outline(game.shape, 1.0), theme, scale=1.0)
         self.preview = arcade.Camera2D()
+        # Content that could not be read is left out of the game and said here, not crashed on.
+        shown = game.problems[:4] + ([f"... and {len(game.problems) - 4} more"] if len(game.problems) > 4 else [])
+        self.problems = arcade.Text("\n".join(shown), 0, 0, theme.rgba("arrow_strong"), 11, anchor_x="center",
+                                    anchor_y="bottom", multiline=True, width=1200, align="center")
 
     # Actions: each changes the game's choices and rebuilds the screen in the new look.
     def on_play(self, _event=None) -> None:
-        self.flow.new_round()
+        if self.game.course is not None:
+            self.flow.new_round()
 
     def on_theme(self, _event=None) -> None:
         self.game.next_theme()
@@ -100,6 +105,9 @@ class MenuView(UIView):
             self.ball_art.draw(0.0, 0.0, self.spin)
         self.shape_caption.position = (cx, cy - radius - 30)
         self.shape_caption.draw()
+        if self.game.problems:
+            self.problems.position = (w / 2, 12)
+            self.problems.draw()
 
     def _scaled(self, cx: float, cy: float, radius: float):
         """A camera that shows the unit-radius ball `radius` pixels big, centred at (cx, cy)."""

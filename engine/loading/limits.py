@@ -1,0 +1,120 @@
+"""Limits on what content may say, checked before any work is done. Every number is finite; each
+has a documented range (the README's table is made from `LIMITS`). They keep every check cheap —
+the quadratic simplicity test at 256 vertices is 33 k segment pairs — and every world finite."""
+
+from __future__ import annotations
+
+import re
+from typing import Annotated
+
+from pydantic import AfterValidator, Field, Strict, StringConstraints
+
+from polygolf.engine.physics.polygon import MAX_SIDES, MIN_SIDES
+
+MAX_FILE_BYTES = 1 << 20  # 1 MiB a content file
+MAX_DEPTH = 32  # YAML nesting
+MAX_NODES = 50_000  # YAML values, aliases expanded
+MAX_COORDINATE = 100_000.0  # m, any position or vertex
+MAX_RADIUS = 50.0  # m, a body's size
+MIN_RADIUS = 0.01
+MAX_HALF = 1_000.0  # m, half a wall box
+MAX_WALL_VERTICES = 256
+MAX_STAR_POINTS = 64
+MAX_SPEED = 1_000.0  # m/s, a velocity component
+MAX_SPIN = 1_000.0  # rad/s
+MAX_ANGLE = 3_600.0  # degrees
+MIN_DENSITY, MAX_DENSITY = 1e-3, 1e6  # kg/m²
+MAX_FRICTION = 10.0
+MAX_DRAG = 1_000.0  # 1/s or m/s²
+MAX_GRAVITY = 1_000.0  # m/s² a component
+MAX_BODIES, MAX_WALLS = 2_000, 5_000
+MAX_NAME = 100  # characters
+MIN_TILE, MAX_TILE = 1.0, 100.0  # m
+MAX_TILE_INDEX = 100  # |column|, |row|
+MAX_TILES = 400  # a hole
+MAX_ITEMS = 100  # things in one pattern
+MAX_ENTRIES = 500  # border sets, patterns, courses, holes in a course
+MAX_KICK = 50.0  # m/s
+MAX_PUSH = 100.0  # m/s²
+MAX_WINDMILL = 20.0  # rad/s
+MAX_CUP_SPEED = 100.0  # m/s
+MAX_LAUNCH_EVERY = 3_600.0  # s
+MAX_SECONDS = 3_600.0  # `simulate --seconds`
+
+LIMITS: list[tuple[str, str]] = [
+    ("content file size", f"≤ {MAX_FILE_BYTES // 1024} KiB"),
+    ("YAML nesting depth", f"≤ {MAX_DEPTH}"),
+    ("YAML values (anchors and aliases expanded)", f"≤ {MAX_NODES:,}"),
+    ("every number", "finite (no .inf, .nan)"),
+    ("coordinates: positions, vertices, box centres", f"|x|, |y| ≤ {MAX_COORDINATE:,.0f} m"),
+    ("shape radius (regular, star, random)", f"{MIN_RADIUS} – {MAX_RADIUS:g} m"),
+    ("wall box half-extents", f"0 < half ≤ {MAX_HALF:,.0f} m"),
+    ("vertices: regular and random shapes, `vertices` bodies", f"{MIN_SIDES} – {MAX_SIDES}"),
+    ("vertices: wall and pattern polygons", f"3 – {MAX_WALL_VERTICES}"),
+    ("star points {p/q}", f"5 ≤ p ≤ {MAX_STAR_POINTS}, 2 ≤ q < p/2"),
+    ("velocity components", f"|v| ≤ {MAX_SPEED:,.0f} m/s"),
+    ("spin", f"|ω| ≤ {MAX_SPIN:,.0f} rad/s"),
+    ("angles", f"|a| ≤ {MAX_ANGLE:,.0f}°"),
+    ("density", f"{MIN_DENSITY:g} – {MAX_DENSITY:g} kg/m²"),
+    ("restitution", "0 – 1"),
+    ("friction", f"0 – {MAX_FRICTION:g}"),
+    ("drag rates (linear, angular, rolling)", f"0 – {MAX_DRAG:,.0f}"),
+    ("gravity components", f"|g| ≤ {MAX_GRAVITY:,.0f} m/s²"),
+    ("bodies, walls in a scene", f"1 – {MAX_BODIES:,}, ≤ {MAX_WALLS:,}"),
+    ("names", f"1 – {MAX_NAME} characters"),
+    ("tile size", f"{MIN_TILE:g} – {MAX_TILE:g} m; wall thickness, ball and cup radius ≤ a quarter of it"),
+    ("tile positions `at`", f"|column|, |row| ≤ {MAX_TILE_INDEX}; ≤ {MAX_TILES} tiles a hole"),
+    ("pattern items; border sets, patterns, courses, holes a course", f"≤ {MAX_ITEMS}; ≤ {MAX_ENTRIES}"),
+    ("bumper kick", f"0 < kick ≤ {MAX_KICK:g} m/s"),
+    ("slope push", f"|a| ≤ {MAX_PUSH:g} m/s² a component"),
+    ("windmill speed", f"|ω| ≤ {MAX_WINDMILL:g} rad/s"),
+    ("cup max_speed", f"0 < v ≤ {MAX_CUP_SPEED:g} m/s"),
+    ("par; max_strokes", "1 – 20; 1 – 99"),
+    ("launcher: every", f"0.1 – {MAX_LAUNCH_EVERY:,.0f} s"),
+    ("`simulate --seconds`", f"0 < s ≤ {MAX_SECONDS:,.0f}"),
+]
+
+
+def finite(lo: float | None = None, hi: float | None = None, *, gt: float | None = None):
+    """A strict float (ints accepted, strings and booleans not) that is finite and in range."""
+    return Annotated[float, Strict(), Field(allow_inf_nan=False, ge=lo, le=hi, gt=gt)]
+
+
+def count(lo: int, hi: int):
+    return Annotated[int, Strict(), Field(ge=lo, le=hi)]
+
+
+Coordinate = finite(-MAX_COORDINATE, MAX_COORDINATE)
+Point = tuple[Coordinate, Coordinate]
+Angle = finite(-MAX_ANGLE, MAX_ANGLE)
+Radius = finite(MIN_RADIUS, MAX_RADIUS)
+Half = finite(hi=MAX_HALF, gt=0.0)
+Speed = finite(-MAX_SPEED, MAX_SPEED)
+Spin = finite(-MAX_SPIN, MAX_SPIN)
+Density = finite(MIN_DENSITY, MAX_DENSITY)
+Restitution = finite(0.0, 1.0)
+Friction = finite(0.0, MAX_FRICTION)
+Rate = finite(0.0, MAX_DRAG)
+Acceleration = finite(-MAX_GRAVITY, MAX_GRAVITY)
+Name = Annotated[str, StringConstraints(min_length=1, max_length=MAX_NAME)]
+Seed = count(0, 2**63 - 1)
+
+
+def _matching(pattern: str, what: str):
+    compiled = re.compile(pattern)
+
+    def check(value: str) -> str:
+        if not compiled.fullmatch(value):
+            raise ValueError(f"{what}, got {value[:40]!r}")
+        return value
+
+    return AfterValidator(check)
+
+
+Key = Annotated[str, Strict(), _matching(r"[A-Za-z0-9][A-Za-z0-9_.-]{0,99}",
+                                         "a name is letters, digits, '-', '_' and '.' (at most 100)")]
+FileName = Annotated[str, Strict(), _matching(r"[A-Za-z0-9][A-Za-z0-9_-]{0,99}",
+                                              "a hole is named by its file in this folder, without '.yaml' "
+                                              "(letters, digits, '-', '_')")]
+Colour = Annotated[str, Strict(), _matching(r"#([0-9a-fA-F]{6}|[0-9a-fA-F]{8})",
+                                            'a colour is "#RRGGBB" or "#RRGGBBAA"')]

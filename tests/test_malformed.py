@@ -1,0 +1,372 @@
+"""A corpus of malformed content, as a careless author or a hostile file would write it: every case
+is refused in one line `file:line: field: message`, with no traceback, promptly; nothing is accepted
+that should not be. Five kinds of file (hole, tile library, courses, theme, scene) and the arguments."""
+
+from __future__ import annotations
+
+import json
+import re
+import shutil
+import signal
+import textwrap
+from contextlib import contextmanager
+from pathlib import Path
+
+import pytest
+
+from polygolf.engine.loading.paths import HOLES_DIR, SCENES_DIR, THEMES_DIR
+from polygolf.game.cli import main
+
+HOLE = textwrap.dedent("""\
+    name: Case
+    par: 3
+    tiles:
+      - {at: [0, 0], borders: open-e}
+      - {at: [1, 0], borders: open-w}
+    """)
+SCENE = textwrap.dedent("""\
+    name: case
+    bodies:
+      - name: ball
+        shape: {regular: 4, radius: 0.5}
+        position: [3.0, 0.0]
+        velocity: [-10.0, 0.0]
+    walls:
+      - box: {center: [-1.0, 0.0], half: [1.0, 5.0]}
+    """)
+COURSES = "courses:\n  - name: Case\n    holes: [case]\n"
+LIBRARY = (HOLES_DIR / "tiles.yaml").read_text()
+THEME = (THEMES_DIR / "grass.yaml").read_text()
+LINE = re.compile(r"^(?P<file>[^:]+):(?P<line>\d+): (?P<field>[^:]+): (?P<message>.+)$")
+
+
+def _sub(text: str, old: str, new: str) -> str:
+    assert old in text, old
+    return text.replace(old, new, 1)
+
+
+def _bomb(levels: int = 9) -> str:
+    lines = ["a0: &a0 [1, 1, 1, 1, 1, 1, 1, 1, 1, 1]"]
+    for i in range(1, levels):
+        lines.append(f"a{i}: &a{i} [" + ", ".join([f"*a{i - 1}"] * 10) + "]")
+    return "\n".join(lines) + "\nname: bomb\npar: 3\ntiles: *a8\n"
+
+
+# (id, kind, content, line, field, message fragment). Line None: any line.
+CASES = [
+    # --- holes -------------------------------------------------------------------------------
+    ("hole-nul-byte", "hole", HOLE.encode().replace(b"Case", b"Ca\x00se"), 1, "(file)", "control character"),
+    ("hole-latin1", "hole", HOLE.encode().replace(b"Case", "Café".encode("latin-1")), 1, "(file)", "not UTF-8"),
+    ("hole-cyclic-anchor", "hole", "name: &n [a, *n]\npar: 3\ntiles: []\n", 1, "name[1]", "alias refers to the value"),
+    ("hole-deep-nesting", "hole", "name: " + "[" * 200 + "]" * 200 + "\npar: 3\n", 1, "(yaml)", "nested more than"),
+    ("hole-billion-laughs", "hole", _bomb(), None, None, "values"),
+    ("hole-huge-tile-index", "hole", _sub(HOLE, "[1, 0]", "[100000000000000000, 0]"), 5, "tiles[1].at[0]",
+     "less than or equal to 100"),
+    ("hole-python-name-tag", "hole", _sub(HOLE, "name: Case", "name: !!python/name:os.system x"), 1, "name",
+     "not allowed"),
+    ("hole-python-object-tag", "hole", _sub(HOLE, "name: Case", "name: !!python/object:os.system {}"), 1, "name",
+     "not allowed"),
+    ("hole-unknown-border", "hole", _sub(HOLE, "open-w}", "open-x}"), 5, "tiles[1].borders", "unknown border set"),
+    ("hole-unknown-pattern", "hole", _sub(HOLE, "open-w}", "open-w, pattern: nope}"), 5, "tiles[1].pattern",
+     "unknown pattern"),
+    ("hole-open-to-nothing", "hole", _sub(HOLE, "borders: open-w}", "borders: open-ew}"), 5, "tiles[1].borders",
+     "opens onto no tile"),
+    ("hole-par-zero", "hole", _sub(HOLE, "par: 3", "par: 0"), 2, "par", "greater than or equal to 1"),
+    ("hole-par-float", "hole", _sub(HOLE, "par: 3", "par: 3.5"), 2, "par", "valid integer"),
+    ("hole-par-string", "hole", _sub(HOLE, "par: 3", "par: three"), 2, "par", "valid integer"),
+    ("hole-no-tiles", "hole", _sub(HOLE, "tiles:", "tiles: []\nextra:"), 3, "tiles", "at least 1"),
+    ("hole-rotate-45", "hole", _sub(HOLE, "open-w}", "open-w, rotate: 45}"), 5, "tiles[1].rotate", "90"),
+    ("hole-unknown-key", "hole", _sub(HOLE, "par: 3", "par: 3\ncolour: red"), 3, "colour", "unknown key"),
+    ("hole-green-inf", "hole", _sub(HOLE, "par: 3", "par: 3\ngreen: {linear: .inf}"), 3, "green.linear", "finite"),
+    ("hole-green-negative", "hole", _sub(HOLE, "par: 3", "par: 3\ngreen: {rolling: -1}"), 3, "green.rolling",
+     "greater than or equal to 0"),
+    ("hole-launch-nan", "hole", _sub(HOLE, "par: 3", "par: 3\nlaunch: {velocity: [.nan, 0]}"), 3,
+     "launch.velocity[0]", "finite"),
+    ("hole-launch-every-zero", "hole", _sub(HOLE, "par: 3", "par: 3\nlaunch: {velocity: [1, 0], every: 0}"), 3,
+     "launch.every", "greater than or equal to 0.1"),
+    ("hole-effects-unknown", "hole", _sub(HOLE, "par: 3", "par: 3\neffects: [lava]"), 3, "effects[0]",
+     "Input should be"),
+    ("hole-duplicate-tile", "hole", _sub(HOLE, "[1, 0], borders: open-w}", "[0, 0], borders: open-w}"), 5,
+     "tiles[1].at", "already used"),
+    ("hole-list-top", "hole", "- just\n- a list\n", 1, "(top level)", "should be a mapping"),
+    ("hole-yaml-syntax", "hole", _sub(HOLE, "tiles:", "tiles: [oops"), 4, "(yaml)", "expected"),
+    ("hole-tab-indent", "hole", HOLE.replace("  - {at: [1, 0]", "\t- {at: [1, 0]"), 5, "(yaml)", ""),
+    ("hole-bool-key", "hole", _sub(HOLE, "par: 3", "par: 3\ntrue: 1"), 3, "(top level)", "keys must be names"),
+    ("hole-long-name", "hole", _sub(HOLE, "name: Case", "name: " + "x" * 200), 1, "name", "at most 100"),
+    ("hole-inline-border-bad", "hole", _sub(HOLE, "borders: open-w}", "borders: {w: opn}}"), 5,
+     "tiles[1].borders.w", "'open' or 'wall'"),
+    # --- tile library ------------------------------------------------------------------------
+    ("tiles-size-inf", "library", _sub(LIBRARY, "tile_size: 6.0", "tile_size: .inf"), 3, "tile_size", "finite"),
+    ("tiles-size-huge", "library", _sub(LIBRARY, "tile_size: 6.0", "tile_size: 1.0e+9"), 3, "tile_size",
+     "less than or equal to 100"),
+    ("tiles-thick-walls", "library", _sub(LIBRARY, "wall_thickness: 0.3", "wall_thickness: 2.5"), None, None,
+     "quarter of the tile"),
+    ("tiles-restitution-5", "library", _sub(LIBRARY, "restitution: 0.6", "restitution: 5"), None,
+     "ball.restitution", "less than or equal to 1"),
+    ("tiles-friction-negative", "library", _sub(LIBRARY, "friction: 0.3", "friction: -0.3"), None, "ball.friction",
+     "greater than or equal to 0"),
+    ("tiles-density-denormal", "library", _sub(LIBRARY, "density: 1.0", "density: 5.0e-324"), None, "ball.density",
+     "greater than or equal to 0.001"),
+    ("tiles-cup-speed-inf", "library", _sub(LIBRARY, "max_speed: 4.0", "max_speed: .inf"), None,
+     "cup.max_speed", "finite"),
+    ("tiles-kick-inf", "library", _sub(LIBRARY, "kick: 3.0", "kick: .inf"), None, None, "finite"),
+    ("tiles-kick-zero", "library", _sub(LIBRARY, "kick: 3.0", "kick: 0"), None, None, "greater than 0"),
+    ("tiles-windmill-nan", "library", _sub(LIBRARY, "speed: 1.2", "speed: .nan"), None, None, "finite"),
+    ("tiles-windmill-fast", "library", _sub(LIBRARY, "speed: 1.2", "speed: 500"), None, None,
+     "less than or equal to 20"),
+    ("tiles-push-huge", "library", re.sub(r"push: \[[^]]*\]", "push: [1.0e+308, 0]", LIBRARY, count=1), None, None,
+     "less than or equal to 100"),
+    ("tiles-no-empty", "library", _sub(LIBRARY, "  empty: []\n", ""), None, "patterns", "needs an 'empty' pattern"),
+    ("tiles-huge-box", "library", _sub(LIBRARY, "half: [0.5, 0.5]", "half: [1.0e+12, 1.0e+12]"), None, None,
+     "less than or equal to 1000"),
+    ("tiles-slope-no-push", "library", re.sub(r"push: \[[^]]*\], ", "", LIBRARY, count=1), None, None,
+     "needs 'push'"),
+    ("tiles-bad-name", "library", _sub(LIBRARY, "  open-n: {n: open}", "  ../evil: {n: open}"), None, None,
+     "a name is letters"),
+    # --- courses -----------------------------------------------------------------------------
+    ("courses-dotdot", "courses", COURSES.replace("[case]", "[../../etc/passwd]"), 3, "courses[0].holes[0]",
+     "a hole is named by its file in this folder"),
+    ("courses-absolute", "courses", COURSES.replace("[case]", "[/tmp/case]"), 3, "courses[0].holes[0]",
+     "a hole is named by its file in this folder"),
+    ("courses-missing-hole", "courses", COURSES.replace("[case]", "[nowhere]"), 3, "courses[0].holes[0]",
+     "no hole file"),
+    ("courses-empty", "courses", "courses: []\n", 1, "courses", "at least 1"),
+    ("courses-holes-not-list", "courses", COURSES.replace("[case]", "case"), 3, "courses[0].holes", "valid list"),
+    ("courses-no-name", "courses", "courses:\n  - holes: [case]\n", 2, "courses[0].name", "missing"),
+    ("courses-empty-name", "courses", "courses:\n  - name: ''\n    holes: [case]\n", 2, "courses[0].name",
+     "at least 1"),
+    ("courses-nul", "courses", COURSES.encode().replace(b"Case", b"C\x00"), 2, "(file)", "control character"),
+    # --- themes ------------------------------------------------------------------------------
+    ("theme-bad-colour", "theme", _sub(THEME, '"#4f9d4a"', '"green"'), 4, "green", 'a colour is "#RRGGBB"'),
+    ("theme-missing-colour", "theme", re.sub(r"\nwall: [^\n]*", "", THEME, count=1), 2, "wall", "missing"),
+    ("theme-number-colour", "theme", _sub(THEME, '"#4f9d4a"', "123456"), 4, "green", "valid string"),
+    ("theme-unknown-key", "theme", THEME + "sparkle: \"#ffffff\"\n", None, "sparkle", "unknown key"),
+    ("theme-latin1", "theme", THEME.encode().replace(b"Grass", "Gr\xe4ss".encode("latin-1")), 2, "(file)",
+     "not UTF-8"),
+    # --- scenes ------------------------------------------------------------------------------
+    ("scene-velocity-minus-inf", "scene", _sub(SCENE, "[-10.0, 0.0]", "[-.inf, 0]"), 6, "bodies[0].velocity[0]",
+     "finite"),
+    ("scene-velocity-1e308", "scene", _sub(SCENE, "[-10.0, 0.0]", "[-1.0e+308, 0]"), 6, "bodies[0].velocity[0]",
+     "greater than or equal to -1000"),
+    ("scene-density-denormal", "scene", _sub(SCENE, "    velocity:", "    density: 5.0e-324\n    velocity:"), 6,
+     "bodies[0].density", "greater than or equal to 0.001"),
+    ("scene-angle-inf", "scene", _sub(SCENE, "    velocity:", "    angle: .inf\n    velocity:"), 6,
+     "bodies[0].angle", "finite"),
+    ("scene-position-nan", "scene", _sub(SCENE, "[3.0, 0.0]", "[.nan, 0.0]"), 5, "bodies[0].position[0]",
+     "finite"),
+    ("scene-gravity-nan", "scene", _sub(SCENE, "bodies:", "gravity: [0, .nan]\nbodies:"), 2, "gravity[1]",
+     "finite"),
+    ("scene-star-100000", "scene", _sub(SCENE, "{regular: 4, radius: 0.5}", "{star: [100000, 2], radius: 0.5}"), 4,
+     "bodies[0].shape.star[0]", "less than or equal to 64"),
+    ("scene-many-vertices", "scene", _sub(SCENE, "{regular: 4, radius: 0.5}", "{vertices: [" + ", ".join(
+        f"[{i}, {i * i % 7}]" for i in range(10_000)) + "]}"), 4, "bodies[0].shape.vertices", "at most 64"),
+    ("scene-wall-4000-vertices", "scene", _sub(SCENE, "  - box: {center: [-1.0, 0.0], half: [1.0, 5.0]}",
+                                                 "  - polygon: [" + ", ".join(f"[{i}, {i % 2}]" for i in range(4000))
+                                                 + "]"), 8, "walls[0].polygon", "at most 256"),
+    ("scene-huge-wall", "scene", _sub(SCENE, "half: [1.0, 5.0]", "half: [1.0e+12, 1.0e+12]"), 8,
+     "walls[0].box.half[0]", "less than or equal to 1000"),
+    ("scene-restitution-5", "scene", _sub(SCENE, "    velocity:", "    restitution: 5\n    velocity:"), 6,
+     "bodies[0].restitution", "less than or equal to 1"),
+    ("scene-radius-zero", "scene", _sub(SCENE, "radius: 0.5", "radius: 0"), 4, "bodies[0].shape.radius",
+     "greater than or equal to 0.01"),
+    ("scene-radius-tiny-vertices", "scene", _sub(SCENE, "{regular: 4, radius: 0.5}",
+                                                   "{vertices: [[0, 0], [1.0e-300, 0], [0, 1.0e-300]]}"), 4,
+     "bodies[0].shape", "zero area"),
+    ("scene-spin-huge", "scene", _sub(SCENE, "    velocity:", "    spin: 1.0e+9\n    velocity:"), 6,
+     "bodies[0].spin", "less than or equal to 1000"),
+    ("scene-seed-negative", "scene", _sub(SCENE, "{regular: 4, radius: 0.5}",
+                                          "{random: {seed: -1, vertices: 6}, radius: 0.5}"), 4,
+     "bodies[0].shape.random.seed", "greater than or equal to 0"),
+    ("scene-bodies-empty", "scene", _sub(_sub(SCENE, "bodies:\n", "bodies: []\nx:\n"), "  - name: ball\n", ""),
+     None, None, ""),
+    ("scene-empty-file", "scene", "", 1, "(top level)", "should be a mapping"),
+    ("scene-binary", "scene", bytes(range(256)) * 4, None, "(file)", "not UTF-8"),
+    ("scene-too-big", "scene", SCENE + "# " + "x" * (1 << 20) + "\n", 0, "(file)", "at most 1024 KiB"),
+]
+
+
+@contextmanager
+def deadline(seconds: int):
+    """Fail, rather than hang, if a case takes longer than `seconds`."""
+    def expired(*_):
+        raise TimeoutError(f"took more than {seconds} s")
+
+    old = signal.signal(signal.SIGALRM, expired)
+    signal.alarm(seconds)
+    try:
+        yield
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, old)
+
+
+def place(tmp_path: Path, kind: str, content) -> Path:
+    """Write the case where its kind lives, with good files beside it where it needs them."""
+    holes = tmp_path / "holes"
+    holes.mkdir()
+    shutil.copy(HOLES_DIR / "tiles.yaml", holes / "tiles.yaml")
+    (holes / "case.yaml").write_text(HOLE)
+    target = {"hole": holes / "case.yaml", "library": holes / "tiles.yaml", "courses": holes / "courses.yaml",
+              "theme": tmp_path / "themes" / "case.yaml", "scene": tmp_path / "scenes" / "case.yaml"}[kind]
+    target.parent.mkdir(exist_ok=True)
+    if isinstance(content, bytes):
+        target.write_bytes(content)
+    else:
+        target.write_text(content)
+    return target
+
+
+@pytest.mark.parametrize(("kind", "content", "line", "field", "message"), [c[1:] for c in CASES],
+                         ids=[c[0] for c in CASES])
+def test_malformed_content_is_refused_in_one_line(tmp_path, capsys, kind, content, line, field, message):
+    path = place(tmp_path, kind, content)
+    with deadline(10):
+        code = main(["validate", str(path)])
+    out, err = capsys.readouterr()
+    assert code == 1, f"accepted: {out}{err}"
+    assert "Traceback" not in err
+    problems = err.strip().splitlines()
+    assert problems, "no problem reported"
+    first = LINE.match(problems[0])
+    assert first, f"not one line file:line: field: message: {problems[0]!r}"
+    assert Path(first["file"]) == path
+    if line is not None:
+        assert int(first["line"]) == line, problems[0]
+    if field is not None:
+        assert first["field"] == field, problems[0]
+    assert message.lower() in err.lower(), problems
+    assert all(LINE.match(p) for p in problems), problems
+    assert re.fullmatch(r"1 file checked, \d+ problems?", out.strip().splitlines()[-1]), out
+
+
+def test_the_corpus_is_large_and_covers_every_kind():
+    kinds = {c[1] for c in CASES}
+    assert len(CASES) >= 60 and kinds == {"hole", "library", "courses", "theme", "scene"}
+
+
+@pytest.mark.parametrize(("case", "args", "message"), [
+    ("seconds-inf", ["simulate", "SCENE", "--seconds", "inf"], "--seconds"),
+    ("seconds-nan", ["simulate", "SCENE", "--seconds", "nan"], "--seconds"),
+    ("seconds-negative", ["simulate", "SCENE", "--seconds", "-5"], "--seconds"),
+    ("seconds-zero", ["simulate", "SCENE", "--seconds", "0"], "--seconds"),
+    ("seconds-huge", ["simulate", "SCENE", "--seconds", "1e9"], "--seconds"),
+    ("seconds-word", ["simulate", "SCENE", "--seconds", "long"], "--seconds"),
+    ("scene-missing", ["simulate", "nowhere.yaml"], "nowhere.yaml:0: (file)"),
+    ("render-folder-is-a-file", ["render", "meadow", "2", "--out", "FILE/y.png"], "--out"),
+    ("render-not-png", ["render", "meadow", "2", "--out", "OUT/picture.txt"], "--out"),
+    ("render-bad-hole", ["render", "meadow", "99", "--out", "OUT/x.png"], "holes 1 to 9"),
+    ("render-bad-course", ["render", "nowhere", "1", "--out", "OUT/x.png"], "no course"),
+    ("shape-huge", ["render", "meadow", "1", "--shape", "100000", "--out", "OUT/x.png"], "--shape"),
+    ("shape-empty", ["render", "meadow", "1", "--shape", "", "--out", "OUT/x.png"], "--shape"),
+    ("shape-star-bad", ["render", "meadow", "1", "--shape", "star-6-3", "--out", "OUT/x.png"], "--shape"),
+    ("theme-unknown", ["render", "meadow", "1", "--theme", "lava", "--out", "OUT/x.png"], "no theme"),
+    ("explain-missing", ["explain", "nowhere:1"], "no course"),
+])
+def test_bad_arguments_get_one_line_and_exit_2(tmp_path, capsys, case, args, message):
+    (tmp_path / "file.txt").write_text("not a folder")
+    args = [a.replace("SCENE", str(SCENES_DIR / "flat-wall.yaml")).replace("OUT", str(tmp_path))
+            .replace("FILE", str(tmp_path / "file.txt")) for a in args]
+    with deadline(20):
+        code = _exit_code(args)
+    out, err = capsys.readouterr()
+    assert code == 2, (out, err)
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and "Traceback" not in err, err
+    assert message in lines[0], lines[0]
+
+
+def _exit_code(args) -> int:
+    try:
+        return main(args)
+    except SystemExit as exc:  # argparse's own refusal
+        return int(exc.code)
+
+
+def test_simulate_json_is_strict_json_even_when_the_numbers_are_not(tmp_path, capsys):
+    path = tmp_path / "far.yaml"
+    path.write_text(SCENE.replace("[-10.0, 0.0]", "[-1000.0, 0.0]").replace("walls:\n  - box: {center: [-1.0, 0.0], "
+                                                                          "half: [1.0, 5.0]}\n", ""))
+    assert main(["simulate", str(path), "--seconds", "2", "--json"]) == 0
+    text = capsys.readouterr().out
+    report = json.loads(text, parse_constant=lambda name: pytest.fail(f"{name} in the JSON"))
+    assert report["bodies"][0]["position"][0] < 0
+
+
+@pytest.fixture
+def content_copy(tmp_path, monkeypatch):
+    """A copy of the shipped content, used as the game's content folder; no user content."""
+    from polygolf.engine.loading import paths
+
+    root = tmp_path / "content"
+    shutil.copytree(paths.CONTENT_DIR, root)
+    monkeypatch.setattr(paths, "CONTENT_DIR", root)
+    monkeypatch.setenv("POLYGOLF_DATA", str(tmp_path / "data"))
+    return root
+
+
+def test_a_broken_theme_is_left_out_and_the_rest_play(content_copy):
+    from polygolf.game.session import Game
+
+    (content_copy / "themes" / "night.yaml").write_bytes(b"name: Night\nbackground: \xff\n")
+    game = Game.load()
+    assert [t.name for t in game.themes] == ["Grass", "Sand"]
+    assert len(game.problems) == 1 and "night.yaml:2: (file): not UTF-8" in game.problems[0]
+    assert len(game.courses) == 4
+
+
+def test_every_theme_broken_falls_back_to_a_plain_palette(content_copy):
+    from polygolf.game.session import Game
+    from polygolf.game.theme import FALLBACK
+
+    for path in (content_copy / "themes").glob("*.yaml"):
+        path.write_text("name: [unclosed\n")
+    game = Game.load()
+    assert game.themes == [FALLBACK] and len(game.problems) == 3
+
+
+def test_a_broken_courses_file_costs_its_courses_not_the_game(content_copy):
+    from polygolf.game.session import Game
+
+    (content_copy / "holes" / "courses.yaml").write_text("courses: {not: a list}\n")
+    game = Game.load()
+    assert game.courses == [] and game.course is None
+    assert "courses.yaml:1: courses" in game.problems[0]
+
+
+def test_a_broken_hole_is_skipped_and_the_course_plays_on(content_copy):
+    from polygolf.engine.golf.holes import load_all_courses
+
+    (content_copy / "holes" / "zig-zag.yaml").write_bytes(b"name: Zig\x00Zag\n")
+    courses, problems = load_all_courses()
+    meadow = courses[0]
+    assert problems == []
+    assert [type(h).__name__ for h in meadow.holes].count("ContentError") == 1
+    assert "zig-zag.yaml:1: (file): control character U+0000" in str(meadow.holes[2])
+    assert len(meadow.playable) == 8
+
+
+def test_render_of_a_good_hole_works_beside_a_broken_one(content_copy, tmp_path):
+    (content_copy / "holes" / "zig-zag.yaml").write_text("name: Zig\npar: 3\ntiles: [{at: [1e99, 0]}]\n")
+    out = tmp_path / "castle.png"
+    assert main(["render", "meadow", "9", "--out", str(out)]) == 0
+    assert out.stat().st_size > 10_000
+    assert main(["render", "meadow", "3", "--out", str(tmp_path / "zz.png")]) == 2
+
+
+def test_player_content_is_added_to_the_shipped_content(content_copy, tmp_path):
+    from polygolf.engine.loading.paths import user_content_dir
+    from polygolf.game.session import Game
+
+    mine = user_content_dir()
+    (mine / "holes").mkdir(parents=True)
+    (mine / "themes").mkdir()
+    (mine / "holes" / "my-hole.yaml").write_text("name: Mine\npar: 2\ntiles:\n  - {at: [0, 0]}\n  - {at: [1, 0]}\n")
+    (mine / "holes" / "courses.yaml").write_text("courses:\n  - name: My Course\n    holes: [my-hole]\n")
+    theme = (content_copy / "themes" / "grass.yaml").read_text().replace("name: Grass", "name: Mine")
+    (mine / "themes" / "mine.yaml").write_text(theme)
+    game = Game.load()
+    assert [c.name for c in game.courses][-1] == "My Course"
+    mine_course = game.courses[-1]
+    assert [h.spec.name for h in mine_course.playable] == ["Mine"]
+    assert "Mine" in [t.name for t in game.themes]
+    assert main(["validate"]) == 0

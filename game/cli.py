@@ -176,6 +176,21 @@ def _bench_accuracy(args: argparse.Namespace) -> int:
     return 0
 
 
+def _schema(args: argparse.Namespace) -> int:
+    from polygolf.game.tools.schema import schemas, write_schemas
+
+    if args.out is None:
+        print(json.dumps(schemas(), indent=2, sort_keys=True))
+        return 0
+    try:
+        for path in write_schemas(Path(args.out)):
+            print(path)
+    except OSError as exc:
+        print(f"polygolf: --out: cannot write {args.out}: {exc.strerror or exc}", file=sys.stderr)
+        return EXIT_CONTENT
+    return 0
+
+
 def _explain(args: argparse.Namespace) -> int:
     from polygolf.game.tools.explain import explain
 
@@ -227,6 +242,11 @@ def build_parser() -> argparse.ArgumentParser:
     acc.add_argument("--workers", type=int, default=2, help="processes, one a core (default 2)")
     acc.add_argument("--no-progress", action="store_true", help="no progress bar")
     acc.set_defaults(run=_bench_accuracy)
+
+    sch = sub.add_parser("schema", help="JSON Schema for every kind of content file (for editors)")
+    sch.add_argument("--out", default=None, help="folder for hole/tiles/courses/theme/scene.schema.json "
+                                                 "(default: one JSON object on standard output)")
+    sch.set_defaults(run=_schema)
 
     exp = sub.add_parser("explain", help="list a scene's or hole's pipeline and why each system is in it")
     exp.add_argument("path", help="scene or hole YAML file, or COURSE:HOLE (meadow:3)")

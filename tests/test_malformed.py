@@ -96,8 +96,8 @@ CASES = [
     ("hole-inline-border-bad", "hole", _sub(HOLE, "borders: open-w}", "borders: {w: opn}}"), 5,
      "tiles[1].borders.w", "'open' or 'wall'"),
     # --- tile library ------------------------------------------------------------------------
-    ("tiles-size-inf", "library", _sub(LIBRARY, "tile_size: 6.0", "tile_size: .inf"), 3, "tile_size", "finite"),
-    ("tiles-size-huge", "library", _sub(LIBRARY, "tile_size: 6.0", "tile_size: 1.0e+9"), 3, "tile_size",
+    ("tiles-size-inf", "library", _sub(LIBRARY, "tile_size: 6.0", "tile_size: .inf"), 4, "tile_size", "finite"),
+    ("tiles-size-huge", "library", _sub(LIBRARY, "tile_size: 6.0", "tile_size: 1.0e+9"), 4, "tile_size",
      "less than or equal to 100"),
     ("tiles-thick-walls", "library", _sub(LIBRARY, "wall_thickness: 0.3", "wall_thickness: 2.5"), None, None,
      "quarter of the tile"),
@@ -137,11 +137,11 @@ CASES = [
      "at least 1"),
     ("courses-nul", "courses", COURSES.encode().replace(b"Case", b"C\x00"), 2, "(file)", "control character"),
     # --- themes ------------------------------------------------------------------------------
-    ("theme-bad-colour", "theme", _sub(THEME, '"#4f9d4a"', '"green"'), 4, "green", 'a colour is "#RRGGBB"'),
-    ("theme-missing-colour", "theme", re.sub(r"\nwall: [^\n]*", "", THEME, count=1), 2, "wall", "missing"),
-    ("theme-number-colour", "theme", _sub(THEME, '"#4f9d4a"', "123456"), 4, "green", "valid string"),
+    ("theme-bad-colour", "theme", _sub(THEME, '"#4f9d4a"', '"green"'), 5, "green", 'a colour is "#RRGGBB"'),
+    ("theme-missing-colour", "theme", re.sub(r"\nwall: [^\n]*", "", THEME, count=1), 3, "wall", "missing"),
+    ("theme-number-colour", "theme", _sub(THEME, '"#4f9d4a"', "123456"), 5, "green", "valid string"),
     ("theme-unknown-key", "theme", THEME + "sparkle: \"#ffffff\"\n", None, "sparkle", "unknown key"),
-    ("theme-latin1", "theme", THEME.encode().replace(b"Grass", "Gr\xe4ss".encode("latin-1")), 2, "(file)",
+    ("theme-latin1", "theme", THEME.encode().replace(b"Grass", "Gr\xe4ss".encode("latin-1")), 3, "(file)",
      "not UTF-8"),
     # --- scenes ------------------------------------------------------------------------------
     ("scene-velocity-minus-inf", "scene", _sub(SCENE, "[-10.0, 0.0]", "[-.inf, 0]"), 6, "bodies[0].velocity[0]",

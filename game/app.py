@@ -52,17 +52,21 @@ def run_menu() -> None:
     arcade_run()
 
 
-def _game_for(course: str, hole: int, theme: str | None, shape: str | None):
-    """The game set up from command-line choices; refuses an unknown course, theme, shape or hole."""
+def _game_for(course: str | None, hole: int, theme: str | None, shape, only=None):
+    """The game set up from command-line choices; refuses an unknown course, theme, shape or hole.
+    `only`: play this course alone (a hole file)."""
     from polygolf.engine.golf.holes import find_course
     from polygolf.game.session import Game
     from polygolf.game.shapes import parse_shape
     from polygolf.game.theme import find_theme
 
     game = Game.load()
-    if not game.courses:
+    if only is not None:
+        game.courses, game.course_index = [only], 0
+    elif not game.courses:
         raise ValueError(game.problems[0] if game.problems else "no course could be read")
-    game.course_index = game.courses.index(find_course(game.courses, course))
+    else:
+        game.course_index = game.courses.index(find_course(game.courses, course))
     if theme:
         game.theme_index = game.themes.index(find_theme(game.themes, theme))
     if shape is not None:
@@ -79,6 +83,32 @@ def run_play(course: str, hole: int, theme: str | None, shape: str | None, prese
     game.preset = preset
     game.guide_seen = True
     ScreenFlow(make_window(), game).new_round(hole - 1)
+    arcade_run()
+
+
+def run_hole_file(path: Path, theme: str | None, shape, preset: str, watch: bool) -> None:
+    """Play one hole file straight away; with `watch`, it is built again each time it is saved."""
+    from polygolf.engine.golf.holes import Course, load_hole_file
+    from polygolf.game.flow import ScreenFlow
+
+    hole = load_hole_file(path)
+    game = _game_for(None, 1, theme, shape, Course(id=path.stem, name=path.name, holes=[hole]))
+    game.preset = preset
+    game.guide_seen = True
+    flow = ScreenFlow(make_window(), game)
+    flow.new_round()
+    if watch:
+        import arcade
+
+        from polygolf.game.watch import FileWatcher, HoleReloader
+
+        watcher = FileWatcher(path, path.parent / "tiles.yaml")
+        arcade.schedule(HoleReloader(flow, path, watcher), 0.25)
+        try:
+            arcade_run()
+        finally:
+            watcher.close()
+        return
     arcade_run()
 
 

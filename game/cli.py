@@ -130,8 +130,13 @@ def _menu(args: argparse.Namespace) -> int:
 
 
 def _play(args: argparse.Namespace) -> int:
-    from polygolf.game.app import run_play
+    from polygolf.game.app import run_hole_file, run_play
 
+    if args.file is not None:
+        return _window(run_hole_file, args.file, args.theme, args.shape, args.preset, args.watch)
+    if args.watch:
+        print("polygolf: --watch needs a hole file: polygolf play FILE.yaml --watch", file=sys.stderr)
+        return EXIT_CONTENT
     return _window(run_play, args.course, args.hole, args.theme, args.shape, args.preset)
 
 
@@ -212,7 +217,9 @@ def build_parser() -> argparse.ArgumentParser:
     sim.add_argument("--json", action="store_true", help="print one JSON object")
     sim.set_defaults(run=_simulate)
 
-    play = sub.add_parser("play", help="play a hole of a course straight away")
+    play = sub.add_parser("play", help="play a hole of a course, or a hole file, straight away")
+    play.add_argument("file", nargs="?", type=Path, default=None, help="a hole file to play on its own")
+    play.add_argument("--watch", action="store_true", help="with a hole file: build it again each time it is saved")
     play.add_argument("--course", default="meadow", help="course name (default meadow)")
     play.add_argument("--hole", type=int, default=1, help="hole number (default 1)")
     play.add_argument("--theme", default=None, help="grass, sand, night ...")

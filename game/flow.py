@@ -72,6 +72,12 @@ class ScreenFlow:
         self.playing = PlayView(self.game, round_, self)
         self._show(self.playing)
 
+    def replace_hole(self, index: int, hole) -> None:
+        """A hole of the round's course was edited: the new one is played from now on."""
+        self.game.course.holes[index] = hole
+        if self.playing is not None and self.game.round is not None and self.game.round.position == index:
+            self.playing.reload_hole()
+
     def quit(self) -> None:
         self._leave_hole()
         self.window.close()

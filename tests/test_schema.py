@@ -45,3 +45,13 @@ def test_the_hole_schema_offers_the_librarys_names():
     with pytest.raises(jsonschema.ValidationError):
         jsonschema.validate({"name": "x", "bodies": [{"name": "b", "shape": {"regular": 4, "radius": 0.5},
                                                       "position": [0, 0], "restitution": 5}]}, SCHEMAS["scene"])
+
+
+def test_the_readme_lists_the_limits_that_are_enforced():
+    from polygolf.engine.loading.limits import LIMITS
+
+    readme = (CONTENT_DIR.parent / "README.md").read_text() if (CONTENT_DIR.parent / "README.md").exists() else ""
+    if not readme:
+        pytest.skip("no README beside the content (an installed package)")
+    for what, limit in LIMITS:
+        assert f"| {what} | {limit} |" in readme, what

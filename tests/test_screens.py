@@ -263,3 +263,42 @@ def test_f3_overlay_shows_each_systems_cost_and_keys_switch_the_preset(window, g
     key(window, arcade.key.KEY_2)
     key(window, arcade.key.F3)
     assert not play.overlay and game.preset == "balanced"
+
+
+def test_a_watched_hole_file_reloads_on_save_and_keeps_the_ball(window, game, tmp_path, shots_dir):
+    import time
+
+    from polygolf.engine.golf.holes import Course, load_hole_file
+    from polygolf.game.watch import FileWatcher, HoleReloader
+
+    path = tmp_path / "mine.yaml"
+    path.write_text("name: Mine\npar: 2\ntiles:\n  - {at: [0, 0]}\n  - {at: [1, 0]}\n")
+    game.courses, game.course_index, game.guide_seen = [Course("mine", "mine.yaml", [load_hole_file(path)])], 0, True
+    flow = ScreenFlow(window, game)
+    flow.new_round()
+    play = flow.playing
+    play.world.place_ball(4.0, 2.0)
+    watcher = FileWatcher(path)
+    reload = HoleReloader(flow, path, watcher)
+    try:
+        time.sleep(0.3)  # the watcher's thread is listening
+        path.write_text("name: Mine, longer\npar: 3\ntiles:\n  - {at: [0, 0]}\n  - {at: [1, 0]}\n  - {at: [2, 0]}\n")
+        for _ in range(100):
+            reload()
+            if play.world.hole.spec.name == "Mine, longer":
+                break
+            time.sleep(0.05)
+        assert play.world.hole.spec.name == "Mine, longer" and len(play.world.layout.floor) == 3
+        assert (play.world.ball.x, play.world.ball.y) == (4.0, 2.0)  # it still fits: kept
+        assert_not_blank(snapshot(window, shots_dir, "play-watch-reloaded"), "reloaded")
+        path.write_text("name: Mine\npar: 3\ntiles:\n  - {at: [0, 0], borders: nowhere}\n")
+        for _ in range(100):
+            reload()
+            if "nowhere" in play.banner.text:
+                break
+            time.sleep(0.05)
+        assert "mine.yaml:4: tiles[0].borders: unknown border set 'nowhere'" in play.banner.text
+        assert play.world.hole.spec.name == "Mine, longer"  # the last good version plays on
+        snapshot(window, shots_dir, "play-watch-broken")
+    finally:
+        watcher.close()

@@ -66,13 +66,23 @@ class Course:
         return [h for h in self.holes if isinstance(h, Hole)]
 
 
+def library_beside(path: Path) -> TileLibrary:
+    """The tile library a content file uses: `tiles.yaml` beside it, else the shipped one."""
+    beside = Path(path).parent / "tiles.yaml"
+    return load_library(beside if beside.exists() else None)
+
+
+def load_hole_file(path: str | Path) -> Hole:
+    """A hole file on its own (to play or check it), with the library beside it or the shipped one."""
+    return load_hole(path, library_beside(Path(path)))
+
+
 def load_courses(path: str | Path | None = None, library: TileLibrary | None = None) -> list[Course]:
     """Every course of a courses file with its holes. A broken hole is kept as its ContentError so
     the rest of the course plays; an unknown hole name is such an error too. Holes are files beside
     the courses file; the library is the one beside it too, else the shipped one."""
     path = Path(path or HOLES_DIR / "courses.yaml")
-    beside = path.parent / "tiles.yaml"
-    library = library or load_library(beside if beside.exists() else None)
+    library = library or library_beside(path)
     data, lines = load_yaml(path)
     spec = validate(CoursesFile, data, lines, path)
     courses = []

@@ -208,6 +208,19 @@ def point_clearance(layout: HoleLayout, x: float, y: float, outlines: list | Non
     return best
 
 
+def ball_fits(layout: HoleLayout, x: float, y: float, radius: float) -> bool:
+    """Whether a ball of `radius` can rest at (x, y): on the green, clear of every wall and obstacle,
+    out of the water and out of every windmill's sweep."""
+    on_green = any(x0 <= x <= x1 and y0 <= y <= y1 for x0, y0, x1, y1 in layout.floor)
+    if not on_green or point_clearance(layout, x, y) < radius:
+        return False
+    water = layout.zone_outlines("water")
+    if water and point_clearance(layout, x, y, water) < radius:
+        return False
+    return all(math.hypot(x - px, y - py) >= polygon.bounding_radius(outline) + radius
+               for outline, (px, py), _ in layout.windmills)
+
+
 def ball_outline(shape, radius: float) -> polygon.Outline:
     """The player's chosen shape (a scene ShapeSpec) scaled so its farthest vertex is at `radius`."""
     outline = shape.outline()

@@ -76,6 +76,12 @@ class HolePlay:
         self._shot.request(origin, vector)
         return True
 
+    def place_ball(self, x: float, y: float) -> None:
+        """Put the ball at rest at (x, y) (where a hazard would put it back too)."""
+        self.ball.x, self.ball.y = x, y
+        self.ball.rest()
+        self._ball.rest_x, self._ball.rest_y = x, y
+
     def step(self, frames: int = 1, profile: bool = False) -> None:
         self.sim.step(frames, measure=False, profile=profile)
 

@@ -5,17 +5,12 @@ from __future__ import annotations
 from collections.abc import Iterable
 from pathlib import Path
 
-from polygolf.engine.golf.holes import load_courses, load_hole
+from polygolf.engine.golf.holes import load_courses, load_hole_file
 from polygolf.engine.loading.course import load_library
 from polygolf.engine.loading.paths import content_roots
 from polygolf.engine.loading.scene import load_scene
 from polygolf.engine.loading.yamlsource import ContentError, load_yaml
 from polygolf.game.theme import load_theme
-
-
-def _library_for(path: Path):
-    beside = path.parent / "tiles.yaml"
-    return load_library(beside if beside.exists() else None)
 
 
 def check_file(path: Path) -> list[ContentError]:
@@ -28,7 +23,7 @@ def check_file(path: Path) -> list[ContentError]:
         elif kind == "courses":
             return [p for c in load_courses(path) for h in c.holes if isinstance(h, ContentError) for p in h.problems]
         elif kind == "hole":
-            load_hole(path, _library_for(path))
+            load_hole_file(path)
         elif kind == "scene":
             load_scene(path)
         elif kind == "theme":

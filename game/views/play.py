@@ -11,6 +11,7 @@ import math
 
 import arcade
 
+from polygolf.engine.golf.layout import ball_fits
 from polygolf.engine.golf.play import HolePlay
 from polygolf.game.drawing import HUD_HEIGHT, BallArt, HoleArt, draw_arrow, fit_camera
 from polygolf.game.session import Game, Round
@@ -68,6 +69,15 @@ class PlayView(arcade.View):
 
     def restart_hole(self) -> None:
         self.start_hole()
+
+    def reload_hole(self) -> None:
+        """The hole's file changed (`--watch`): build it again, the ball where it was if it still fits."""
+        where = (self.world.ball.x, self.world.ball.y) if self.world is not None else None
+        self.start_hole()
+        if self.world is not None and where is not None and ball_fits(self.world.layout, *where,
+                                                                      self.world.collider.radius):
+            self.world.place_ball(*where)
+        self.show_banner("Reloaded", 1.5)
 
     def show_banner(self, text: str, seconds: float = 6.0) -> None:
         self.banner.text = text

@@ -5,10 +5,12 @@ that should not be. Five kinds of file (hole, tile library, courses, theme, scen
 from __future__ import annotations
 
 import json
+import math
 import re
 import shutil
 import signal
 import textwrap
+import time
 from contextlib import contextmanager
 from pathlib import Path
 
@@ -162,7 +164,7 @@ CASES = [
         f"[{i}, {i * i % 7}]" for i in range(10_000)) + "]}"), 4, "bodies[0].shape.vertices", "at most 64"),
     ("scene-wall-4000-vertices", "scene", _sub(SCENE, "  - box: {center: [-1.0, 0.0], half: [1.0, 5.0]}",
                                                  "  - polygon: [" + ", ".join(f"[{i}, {i % 2}]" for i in range(4000))
-                                                 + "]"), 8, "walls[0].polygon", "at most 256"),
+                                                 + "]"), 8, "walls[0].polygon", "at most 64"),
     ("scene-huge-wall", "scene", _sub(SCENE, "half: [1.0, 5.0]", "half: [1.0e+12, 1.0e+12]"), 8,
      "walls[0].box.half[0]", "less than or equal to 1000"),
     ("scene-restitution-5", "scene", _sub(SCENE, "    velocity:", "    restitution: 5\n    velocity:"), 6,
@@ -370,3 +372,13 @@ def test_player_content_is_added_to_the_shipped_content(content_copy, tmp_path):
     assert [h.spec.name for h in mine_course.playable] == ["Mine"]
     assert "Mine" in [t.name for t in game.themes]
     assert main(["validate"]) == 0
+
+
+def test_a_file_of_many_large_outlines_is_refused_before_any_is_cut_up(tmp_path, capsys):
+    wall = "  - polygon: [" + ", ".join(f"[{math.cos(a / 64 * 6.283) * 5:.4f}, {math.sin(a / 64 * 6.283) * 5:.4f}]"
+                                       for a in range(64)) + "]\n"
+    path = place(tmp_path, "scene", SCENE + wall * 200)
+    started = time.perf_counter()
+    assert main(["validate", str(path)]) == 1
+    assert "12,808 vertices in all: at most 10,000 in one file" in capsys.readouterr().err
+    assert time.perf_counter() - started < 5.0

@@ -33,6 +33,7 @@ from polygolf.engine.loading.limits import (
     Name,
     Restitution,
     Speed,
+    check_vertex_budget,
     count,
     finite,
 )
@@ -113,6 +114,11 @@ class TileLibrary(Strict_):
     border_sets: Annotated[dict[Key, BorderSet], Field(max_length=MAX_ENTRIES)]
     patterns: Annotated[dict[Key, Annotated[list[PatternItem], Field(max_length=MAX_ITEMS)]],
                         Field(max_length=MAX_ENTRIES)]
+
+    @model_validator(mode="after")
+    def _vertex_budget(self) -> TileLibrary:
+        check_vertex_budget(sum(item.vertex_count for items in self.patterns.values() for item in items))
+        return self
 
     @model_validator(mode="after")
     def _sizes_fit_a_tile(self) -> TileLibrary:

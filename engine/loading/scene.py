@@ -34,6 +34,7 @@ from polygolf.engine.loading.limits import (
     Seed,
     Speed,
     Spin,
+    check_vertex_budget,
     count,
 )
 from polygolf.engine.loading.yamlsource import load
@@ -145,6 +146,10 @@ class WallSpec(Strict_):
         self.outline()
         return self
 
+    @property
+    def vertex_count(self) -> int:
+        return 4 if self.box is not None else len(self.polygon)
+
     def outline(self) -> list[tuple[float, float]]:
         """World-space CCW outline (not re-centred: walls stay where they are written)."""
         raw = self.box.outline() if self.box is not None else self.polygon
@@ -159,6 +164,11 @@ class Scene(Strict_):
     gravity: tuple[Acceleration, Acceleration] = (0.0, 0.0)  # m/s², a push on every body (a tilted table)
     bodies: Annotated[list[BodySpec], Field(min_length=1, max_length=MAX_BODIES)]
     walls: Annotated[list[WallSpec], Field(max_length=MAX_WALLS)] = []
+
+    @model_validator(mode="after")
+    def _vertex_budget(self) -> Scene:
+        check_vertex_budget(sum(len(b.shape.outline()) for b in self.bodies) + sum(w.vertex_count for w in self.walls))
+        return self
 
     @model_validator(mode="after")
     def _unique_names(self) -> Scene:

@@ -69,11 +69,10 @@ def finite_json(value):
 
 
 def _simulate(args: argparse.Namespace) -> int:
-    from polygolf.engine.loading.scene import build_scene, load_scene
+    from polygolf.engine.golf.scenes import build_scene_file
 
-    scene = load_scene(args.scene)
     frames = round(args.seconds * 60)
-    with build_scene(scene, args.preset) as sim:
+    with build_scene_file(args.scene, args.preset) as sim:
         started = time.perf_counter()
         shown = False
         for done in range(0, frames, 60):

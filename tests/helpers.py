@@ -11,7 +11,7 @@ from polygolf.engine.assembly.simulation import Simulation
 from polygolf.engine.assembly.stages import stages_for
 from polygolf.engine.components import Material
 from polygolf.engine.components.resources import Resources, StaticWorld, StepConfig
-from polygolf.engine.loading.scene import build_scene, load_scene
+from polygolf.engine.golf.scenes import build_scene_file
 from polygolf.engine.physics.grid import SpatialGrid
 from polygolf.engine.physics.presets import preset
 
@@ -19,7 +19,7 @@ from .conftest import SCENES
 
 
 def scene_sim(name: str, preset: str = "balanced") -> Simulation:
-    return build_scene(load_scene(SCENES / f"{name}.yaml"), preset)
+    return build_scene_file(SCENES / f"{name}.yaml", preset)
 
 
 def step_until(sim: Simulation, condition, max_frames: int = 600) -> int:

@@ -9,6 +9,7 @@ import textwrap
 
 import pytest
 
+from polygolf.engine.golf.scenes import build_scene_file
 from polygolf.engine.loading.scene import build_scene, load_scene
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.game.cli import main
@@ -35,7 +36,7 @@ def write(tmp_path, text, name="scene.yaml"):
 
 @pytest.mark.parametrize("path", sorted(SCENES.glob("*.yaml")), ids=lambda p: p.stem)
 def test_every_shipped_scene_loads_and_runs(path):
-    with build_scene(load_scene(path)) as sim:
+    with build_scene_file(path) as sim:
         sim.run(0.5)
         assert not sim.metrics.nan
 
@@ -136,13 +137,18 @@ SCENE_PIPELINES = {
     "star-landing": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
     "thin-wall": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
     "vertex-hit": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
+    "ghost-corner": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
+    "seam-slide": ["integrate", "spin", "gravity", "ccd", *CONTACT],
+    "hover-drop": ["integrate", "spin", "gravity", "ccd", *CONTACT],
+    "dog-leg-rail": ["integrate", "spin", "drag", "ccd", *CONTACT, "restitution", "cup"],
 }
-FRICTION = {"corner", "deep-overlap", "fast-spin", "pile", "resting-contact"}
+FRICTION = {"corner", "deep-overlap", "fast-spin", "pile", "resting-contact", "ghost-corner", "hover-drop",
+            "dog-leg-rail"}
 
 
 @pytest.mark.parametrize("name", sorted(SCENE_PIPELINES))
 def test_each_scene_runs_only_the_systems_its_content_needs(name):
-    with build_scene(load_scene(SCENES / f"{name}.yaml")) as sim:
+    with build_scene_file(SCENES / f"{name}.yaml") as sim:
         assert sim.system_names == SCENE_PIPELINES[name]
         resolve = [p for p in sim.processors if p.name == "resolve"]
         assert [p.friction for p in resolve] == ([name in FRICTION] if resolve else [])

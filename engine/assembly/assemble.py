@@ -18,6 +18,7 @@ from polygolf.engine.physics import polygon
 from polygolf.engine.physics.grid import SpatialGrid
 from polygolf.engine.physics.mass import mass_properties
 from polygolf.engine.physics.presets import DEFAULT_PRESET, PRESETS, Knobs, preset
+from polygolf.engine.physics.seams import PROBE, covered_features
 
 _world_ids = itertools.count(1)
 
@@ -54,8 +55,26 @@ def make_wall(outline: Sequence[polygon.Vec], material: Material) -> Wall:
         xs, ys = zip(*points)
         return min(xs), min(ys), max(xs), max(ys)
 
+    nothing_covered = tuple(frozenset() for _ in pieces)  # until mark_seams sees the other walls
     return Wall(outline=outline, pieces=pieces, normals=tuple(polygon.edge_normals(p) for p in pieces),
-                material=material, piece_aabbs=tuple(box(p) for p in pieces))
+                material=material, piece_aabbs=tuple(box(p) for p in pieces), internal=nothing_covered,
+                hidden=nothing_covered)
+
+
+def mark_seams(walls: Sequence[Wall]) -> None:
+    """Tell every wall piece which of its edges and vertices other pieces cover (physics.seams)."""
+    pieces = [(w, k) for w in walls for k in range(len(w.pieces))]
+    index = SpatialGrid(1.0)
+    for i, (w, k) in enumerate(pieces):
+        x0, y0, x1, y1 = w.piece_aabbs[k]
+        index.insert(i, (x0 - 2 * PROBE, y0 - 2 * PROBE, x1 + 2 * PROBE, y1 + 2 * PROBE))
+    internal, hidden = covered_features([w.pieces[k] for w, k in pieces], [w.normals[k] for w, k in pieces],
+                                        lambda i: index.query(pieces[i][0].piece_aabbs[pieces[i][1]]))
+    start = 0
+    for w in walls:
+        count = len(w.pieces)
+        w.internal, w.hidden = tuple(internal[start:start + count]), tuple(hidden[start:start + count])
+        start += count
 
 
 def resolve_knobs(knobs: Knobs | str | None, default: str | None = None) -> tuple[str, Knobs]:
@@ -94,8 +113,9 @@ def assemble(spec: WorldSpec, knobs: Knobs | str | None = None) -> Simulation:
         esper.create_entity(*components)
 
     grid = SpatialGrid(spec.cell_size or max(1.0, 4.0 * radius))
-    for part in spec.walls:
-        wall = make_wall(part.outline, part.material)
+    walls = [make_wall(part.outline, part.material) for part in spec.walls]
+    mark_seams(walls)
+    for part, wall in zip(spec.walls, walls):
         ent = esper.create_entity(wall, *part.extras)
         for k, box in enumerate(wall.piece_aabbs):
             grid.insert((ent, k), box)
@@ -103,7 +123,8 @@ def assemble(spec: WorldSpec, knobs: Knobs | str | None = None) -> Simulation:
         body = Body(x=part.position[0], y=part.position[1], spin=part.spin)  # no inverse mass or inertia
         esper.create_entity(body, make_collider(part.outline, part.material), Name(part.name), *part.extras)
 
-    res = Resources(config=StepConfig(knobs=knobs, effects=frozenset(effects), gravity=tuple(spec.gravity)),
+    res = Resources(config=StepConfig(knobs=knobs, effects=frozenset(effects), gravity=tuple(spec.gravity),
+                                      collide_bodies=spec.collide_bodies),
                     statics=StaticWorld(grid))
     processors = [stage.processor(res) for stage in stages_for(effects, spec, knobs)]
     return Simulation(world, res, processors, names, preset_name=name, reasons=effects, scene_name=spec.name)

@@ -72,8 +72,10 @@ class WorldSpec:
     listed_by: str = "the scene"
     preset: str | None = None  # the content's own preset, if it names one
     cell_size: float | None = None  # broadphase grid cell; default 4 body radii (at least 1 m)
+    collide_bodies: bool = True  # False: dynamic bodies pass through each other (parallel shots)
 
     @property
     def touchable(self) -> bool:
-        """Whether anything can touch anything: walls, or more than one body."""
-        return bool(self.walls) or len(self.bodies) + len(self.kinematic) > 1
+        """Whether anything can touch anything: walls, a kinematic body, or bodies that meet."""
+        return bool(self.walls) or (bool(self.kinematic) and bool(self.bodies)) or (
+            self.collide_bodies and len(self.bodies) > 1)

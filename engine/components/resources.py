@@ -19,6 +19,7 @@ class StepConfig:
     knobs: Knobs
     effects: frozenset[str]
     gravity: tuple[float, float] = (0.0, 0.0)  # m/s²
+    collide_bodies: bool = True  # False: dynamic bodies meet walls and kinematic bodies, not each other
 
     @property
     def dt(self) -> float:

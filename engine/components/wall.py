@@ -13,3 +13,7 @@ class Wall:
     normals: tuple[tuple[Vec, ...], ...]
     material: Material
     piece_aabbs: tuple[tuple[float, float, float, float], ...]
+    # Per piece, what other walls cover (see physics.seams): edges that may not be a contact's
+    # reference face, vertices that may not be a contact point. Filled when the world is built.
+    internal: tuple[frozenset[int], ...] = ()
+    hidden: tuple[frozenset[int], ...] = ()

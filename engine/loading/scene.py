@@ -164,6 +164,8 @@ class Scene(Strict_):
     gravity: tuple[Acceleration, Acceleration] = (0.0, 0.0)  # m/s², a push on every body (a tilted table)
     bodies: Annotated[list[BodySpec], Field(min_length=1, max_length=MAX_BODIES)]
     walls: Annotated[list[WallSpec], Field(max_length=MAX_WALLS)] = []
+    hole: Name | None = None  # COURSE:N, or a hole file beside the scene: its walls, hazards, green and cup
+    collide_bodies: bool = True  # false: bodies meet walls but not each other (parallel shots)
 
     @model_validator(mode="after")
     def _vertex_budget(self) -> Scene:
@@ -194,9 +196,10 @@ def scene_spec(scene: Scene) -> WorldSpec:
     walls = [WallPart(tuple(w.outline()), Material(w.restitution, w.friction)) for w in scene.walls]
     listed = tuple(e for e in EFFECTS if e in scene.effects) if scene.effects is not None else None
     return WorldSpec(name=scene.name, bodies=bodies, walls=walls, gravity=scene.gravity, listed=listed,
-                     listed_by="the scene", preset=scene.preset)
+                     listed_by="the scene", preset=scene.preset, collide_bodies=scene.collide_bodies)
 
 
 def build_scene(scene: Scene, knobs: Knobs | str | None = None) -> Simulation:
-    """A ready-to-step simulation of a scene; `knobs` defaults to the scene's preset, then balanced."""
+    """A ready-to-step simulation of a scene without a hole (`golf.scenes` builds those too);
+    `knobs` defaults to the scene's preset, then balanced."""
     return assemble(scene_spec(scene), knobs)

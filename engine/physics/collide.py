@@ -33,10 +33,14 @@ class RawContact:
     face_y: float
 
 
-def max_separation(verts1: list[Vec], normals1: list[Vec], verts2: list[Vec]) -> tuple[float, int]:
-    """Largest separation of polygon 2 from the faces of polygon 1, and that face's index."""
+def max_separation(verts1: list[Vec], normals1: list[Vec], verts2: list[Vec],
+                   skip: frozenset[int] = frozenset()) -> tuple[float, int]:
+    """Largest separation of polygon 2 from the faces of polygon 1 (but the `skip` ones), and that
+    face's index."""
     best, best_edge = -1e300, 0
     for i, (nx, ny) in enumerate(normals1):
+        if i in skip:
+            continue
         vx, vy = verts1[i]
         lowest = 1e300
         for x, y in verts2:
@@ -56,11 +60,14 @@ def separation(verts_a: list[Vec], normals_a: list[Vec], verts_b: list[Vec], nor
 
 
 def collide_polygons(
-    verts_a: list[Vec], normals_a: list[Vec], verts_b: list[Vec], normals_b: list[Vec], margin: float
+    verts_a: list[Vec], normals_a: list[Vec], verts_b: list[Vec], normals_b: list[Vec], margin: float,
+    internal_b: frozenset[int] = frozenset(), hidden_b: frozenset[int] = frozenset(),
 ) -> tuple[Vec, list[RawContact]] | None:
     """Contact manifold of two convex CCW polygons, or None if they are more than `margin` apart.
 
-    Returns the unit normal pointing from A to B and up to two points.
+    Returns the unit normal pointing from A to B and up to two points. For a wall piece B,
+    `internal_b` are edges covered by other pieces (never a reference face) and `hidden_b` vertices
+    on a flat or reflex stretch of the walls' boundary (never a contact point): see physics.seams.
     """
     sep_a, edge_a = max_separation(verts_a, normals_a, verts_b)
     if sep_a > margin:
@@ -68,21 +75,28 @@ def collide_polygons(
     sep_b, edge_b = max_separation(verts_b, normals_b, verts_a)
     if sep_b > margin:
         return None
+    if internal_b:
+        if len(internal_b) == len(verts_b):
+            return None  # a piece covered all round: the pieces around it answer for it
+        if edge_b in internal_b:
+            sep_b, edge_b = max_separation(verts_b, normals_b, verts_a, internal_b)
 
     if sep_b > sep_a + _REFERENCE_TOLERANCE:
         ref_v, ref_n, inc_v, inc_n, edge, ref_is_a = verts_b, normals_b, verts_a, normals_a, edge_b, False
     else:
         ref_v, ref_n, inc_v, inc_n, edge, ref_is_a = verts_a, normals_a, verts_b, normals_b, edge_a, True
 
-    nx, ny = ref_n[edge]
-    # Incident edge: the face of the other polygon most opposed to the reference normal.
-    inc_edge, lowest = 0, 1e300
-    for i, (mx, my) in enumerate(inc_n):
-        d = mx * nx + my * ny
-        if d < lowest:
-            lowest, inc_edge = d, i
+    inc_edge = _incident_edge(inc_n, ref_n[edge], internal_b if ref_is_a else frozenset())
     count_inc = len(inc_v)
     i1, i2 = inc_edge, (inc_edge + 1) % count_inc
+    if ref_is_a and (i1 in hidden_b or i2 in hidden_b):
+        # A's face would meet a wall corner that lies on a flat stretch of wall: the wall's own face
+        # there is the true surface, so it is the reference (a slanted face would make a ghost hit).
+        ref_v, ref_n, inc_v, inc_n, edge, ref_is_a = verts_b, normals_b, verts_a, normals_a, edge_b, False
+        inc_edge = _incident_edge(inc_n, ref_n[edge], frozenset())
+        count_inc = len(inc_v)
+        i1, i2 = inc_edge, (inc_edge + 1) % count_inc
+    nx, ny = ref_n[edge]
     p1, p2 = inc_v[i1], inc_v[i2]
 
     r1 = ref_v[edge]
@@ -108,6 +122,8 @@ def collide_polygons(
     base_id = (edge * 128 + inc_edge) * 2 + (0 if ref_is_a else 1)
     for px, py, feature in points:
         sep = nx * px + ny * py - face_offset
+        if ref_is_a and feature in hidden_b:
+            continue  # a wall's corner on a flat stretch of wall: the faces around it answer for it
         if sep <= margin:
             contacts.append(RawContact(
                 x=px - 0.5 * sep * nx, y=py - 0.5 * sep * ny, separation=sep,
@@ -118,6 +134,17 @@ def collide_polygons(
         return None
     normal = (nx, ny) if ref_is_a else (-nx, -ny)
     return normal, contacts
+
+
+def _incident_edge(normals: list[Vec], reference: Vec, skip: frozenset[int]) -> int:
+    """The face most opposed to the reference normal (a wall's internal edges face nothing)."""
+    nx, ny = reference
+    best, lowest = 0, 1e300
+    for i, (mx, my) in enumerate(normals):
+        d = mx * nx + my * ny
+        if d < lowest and i not in skip:
+            lowest, best = d, i
+    return best
 
 
 def _clip(points: list[tuple[float, float, int]], nx: float, ny: float, offset: float, plane_id: int

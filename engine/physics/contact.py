@@ -135,13 +135,15 @@ def persistent_impulses(manifolds: list[Manifold]) -> Carried:
 
 
 def collide_pieces(pieces_a, normals_a, pieces_b, normals_b, margin: float, body_a: Body, body_b: Body,
-                   material: Material, ngs: bool, key) -> list[tuple[float, float, ContactPoint]]:
+                   material: Material, ngs: bool, key, seams_b=None) -> list[tuple[float, float, ContactPoint]]:
     """(normal, point) for every pair of convex pieces within `margin`; `key(i, j, feature)` names a
-    point so it can be matched in the next substep."""
+    point so it can be matched in the next substep. `seams_b`: per piece of B, its (internal edges,
+    hidden vertices) when B is a wall (physics.seams)."""
     raw: list[tuple[float, float, ContactPoint]] = []
     for i in range(len(pieces_a)):
         for j in range(len(pieces_b)):
-            hit = collide_polygons(pieces_a[i], normals_a[i], pieces_b[j], normals_b[j], margin)
+            internal, hidden = seams_b[j] if seams_b else (frozenset(), frozenset())
+            hit = collide_polygons(pieces_a[i], normals_a[i], pieces_b[j], normals_b[j], margin, internal, hidden)
             if hit is None:
                 continue
             normal, contacts = hit

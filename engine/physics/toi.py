@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 
 from polygolf.engine.physics.polygon import Vec
+from polygolf.engine.physics.settings import GAP_TOLERANCE
 
 MAX_ITERATIONS = 24
 
@@ -81,3 +82,13 @@ def time_of_impact(
         if max(seps) < level + tolerance:
             return t
     return t
+
+
+def reaches(collider, body, wall: tuple[Vec, ...], wall_normals: tuple[Vec, ...], dt: float) -> bool:
+    """Whether the body, moving on with its velocity for dt, would press into the wall piece (by more
+    than GAP_TOLERANCE: a face that only grazes a corner, level with it, is not a hit)."""
+    start = (body.x, body.y, body.angle)
+    end = (body.x + body.vx * dt, body.y + body.vy * dt, body.angle + body.spin * dt)
+    return any(time_of_impact(piece, collider.normals[i], collider.piece_reach[i], start, end, wall, wall_normals,
+                              -GAP_TOLERANCE, GAP_TOLERANCE / 2, 0.0) is not None
+               for i, piece in enumerate(collider.pieces))

@@ -14,7 +14,7 @@ class BroadphaseProcessor(esper.Processor):
     name = "broadphase"
 
     def __init__(self, res: Resources) -> None:
-        self.statics, self.candidates = res.statics, res.candidates
+        self.statics, self.candidates, self.config = res.statics, res.candidates, res.config
         self._dynamic_grid = SpatialGrid(res.statics.grid.cell_size)
 
     def process(self) -> None:
@@ -37,8 +37,10 @@ class BroadphaseProcessor(esper.Processor):
             for ent, (body, col) in bodies:
                 r = col.radius + CONTACT_MARGIN
                 grid.insert(ent, (body.x - r, body.y - r, body.x + r, body.y + r))
+            meet = self.config.collide_bodies
             for ea, eb in grid.pairs():
-                if _moving(esper.component_for_entity(ea, Body)) or _moving(esper.component_for_entity(eb, Body)):
+                a, b = esper.component_for_entity(ea, Body), esper.component_for_entity(eb, Body)
+                if (_moving(a) or _moving(b)) and (meet or not (a.inv_mass and b.inv_mass)):
                     pairs.append((ea, eb))
         self.candidates.pairs = pairs
 

@@ -3,13 +3,18 @@ import esper
 from polygolf.engine.components import Body, Collider, Wall
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.contact import Manifold, add_manifolds, collide_pieces, combine
-from polygolf.engine.physics.settings import CONTACT_MARGIN
+from polygolf.engine.physics.settings import CONTACT_MARGIN, GAP_TOLERANCE
+from polygolf.engine.physics.toi import reaches
 
 
 class NarrowphaseProcessor(esper.Processor):
     """Manifolds for the broadphase's candidates (see `physics.contact`): every pair of convex
     pieces, one manifold per normal between two bodies, impulses of persisting points carried over
-    for warm starting. Reads the candidates; writes the contacts and the deepest overlap."""
+    for warm starting. Reads the candidates; writes the contacts and the deepest overlap.
+
+    A wall contact with a gap acts only if the body, moving on as it is, would close that gap within
+    the substep (`toi.reaches`): a ball passing a corner it never touches is never hit, and a body
+    above a floor falls until it touches instead of hovering on the contact margin."""
 
     name = "narrowphase"
 
@@ -19,6 +24,7 @@ class NarrowphaseProcessor(esper.Processor):
 
     def process(self) -> None:
         carried = self.contacts.carried() if self.config.knobs.warm_start else {}
+        dt = self.config.dt
         ngs = self.config.knobs.position_correction == "ngs"
         static = self.statics.body
         manifolds: list[Manifold] = []
@@ -30,9 +36,14 @@ class NarrowphaseProcessor(esper.Processor):
             raw = []
             for wall_ent, k in found:
                 wall = esper.component_for_entity(wall_ent, Wall)
-                raw += collide_pieces(pieces, normals, (wall.pieces[k],), (wall.normals[k],), CONTACT_MARGIN, body,
+                hits = collide_pieces(pieces, normals, (wall.pieces[k],), (wall.normals[k],), CONTACT_MARGIN, body,
                                       static, combine(col.material, wall.material), ngs,
-                                      lambda i, _j, feature, w=wall_ent, k=k: (w, k, i, feature))
+                                      lambda i, _j, feature, w=wall_ent, k=k: (w, k, i, feature),
+                                      ((wall.internal[k], wall.hidden[k]),))
+                if hits and min(p.separation for _, _, p in hits) > GAP_TOLERANCE \
+                        and not reaches(col, body, wall.pieces[k], wall.normals[k], dt):
+                    continue  # a gap this substep's motion will not close: nothing touches, nothing acts
+                raw += hits
             if raw:
                 deepest = max(deepest, add_manifolds(manifolds, raw, ent, -1, body, static, carried))
 

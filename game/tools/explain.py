@@ -12,9 +12,10 @@ from polygolf.engine.assembly.simulation import Simulation
 from polygolf.engine.assembly.stages import STAGES
 from polygolf.engine.golf.holes import Hole, find_course, load_courses, load_hole
 from polygolf.engine.golf.play import HolePlay
+from polygolf.engine.golf.scenes import build_scene_file
 from polygolf.engine.loading.course import load_library
 from polygolf.engine.loading.paths import HOLES_DIR
-from polygolf.engine.loading.scene import ShapeSpec, build_scene, load_scene
+from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.loading.yamlsource import ContentError, load_yaml
 
 
@@ -61,9 +62,8 @@ def explain(target: str, preset: str | None = None) -> str:
     if path.suffix in (".yaml", ".yml") and path.exists():
         data, _ = load_yaml(path)
         if not (isinstance(data, dict) and "tiles" in data):
-            scene = load_scene(path)
-            with build_scene(scene, preset) as sim:
-                return _describe(scene.name, sim)
+            with build_scene_file(path, preset) as sim:
+                return _describe(sim.scene_name, sim)
     hole = _hole(target)
     play = HolePlay(hole, ShapeSpec(regular=5, radius=1.0), preset or "balanced")
     try:

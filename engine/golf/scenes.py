@@ -1,0 +1,71 @@
+"""Scenes on real holes: a scene that names a hole (`hole: meadow:2`, or a hole file beside the
+scene) gets the hole's walls, windmills, hazards, green and cup around its own bodies, so authors and
+tests can fire exact shots on real holes. Scenes without a hole are built by `loading.scene`."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from pathlib import Path
+
+from polygolf.engine.assembly.assemble import assemble
+from polygolf.engine.assembly.simulation import Simulation
+from polygolf.engine.assembly.spec import WorldSpec
+from polygolf.engine.components import Ball, Cup, Drag, HoleState, Launcher
+from polygolf.engine.golf.holes import Hole, find_course, load_all_courses, load_hole_file
+from polygolf.engine.golf.world import hole_spec
+from polygolf.engine.loading.scene import Scene, ShapeSpec, load_scene, scene_spec
+from polygolf.engine.loading.yamlsource import ContentError, line_of, load_yaml
+from polygolf.engine.physics.presets import Knobs
+
+
+def find_hole(name: str, beside: Path) -> Hole:
+    """COURSE:N (a hole number of a course), or a hole file (relative to `beside`)."""
+    if ":" in name:
+        course_name, number = name.split(":", 1)
+        holes = find_course(load_all_courses()[0], course_name).holes
+        if not (number.isdigit() and 1 <= int(number) <= len(holes)):
+            raise KeyError(f"{course_name} has holes 1 to {len(holes)}")
+        hole = holes[int(number) - 1]
+        if isinstance(hole, ContentError):
+            raise hole
+        return hole
+    path = beside / name
+    if not path.exists():
+        raise KeyError(f"no hole file {path}")
+    return load_hole_file(path)
+
+
+def scene_on_hole(scene: Scene, hole: Hole) -> WorldSpec:
+    """The scene's bodies on the hole: its walls and windmills too, its hazards and cup, and the
+    green's drag on every body that has none of its own."""
+    own = scene_spec(scene)
+    course = hole_spec(hole, ShapeSpec(regular=5, radius=1.0))
+    green = course.bodies[0].drag
+    bodies = [replace(b, drag=b.drag or (Drag(**_fields(green)) if green else None),
+                      extras=(*b.extras, Ball(*b.position))) for b in own.bodies]
+    entities = [e for e in course.entities if not isinstance(e[0], HoleState | Launcher)]
+    cup = next(e[0] for e in entities if isinstance(e[0], Cup))
+    return replace(own, bodies=bodies, walls=own.walls + course.walls, kinematic=course.kinematic, entities=entities,
+                   rules={"cup": f"the hole's cup at ({cup.x:g}, {cup.y:g})"},
+                   content_effects={k: v for k, v in course.content_effects.items() if k != "launch"},
+                   cell_size=course.cell_size)
+
+
+def _fields(drag: Drag) -> dict[str, float]:
+    return {"linear": drag.linear, "angular": drag.angular, "rolling": drag.rolling,
+            "rolling_angular": drag.rolling_angular}
+
+
+def build_scene_file(path: str | Path, knobs: Knobs | str | None = None) -> Simulation:
+    """A scene file as a simulation, on its hole if it names one."""
+    path = Path(path)
+    scene = load_scene(path)
+    if scene.hole is None:
+        return assemble(scene_spec(scene), knobs)
+    try:
+        hole = find_hole(scene.hole, path.parent)
+    except (KeyError, ContentError) as exc:
+        _, lines = load_yaml(path)
+        message = str(exc) if isinstance(exc, ContentError) else exc.args[0]
+        raise ContentError(path, line_of(("hole",), lines), "hole", message) from None
+    return assemble(scene_on_hole(scene, hole), knobs)

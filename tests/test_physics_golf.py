@@ -1,0 +1,130 @@
+"""Physics where golf is played, at every preset: a ball that never touches is never hit, seams
+between flush walls are not felt, bodies come to rest touching rather than hovering, and a shot along
+a real rail of a real hole keeps its line. Each case is a named scene in content/scenes/."""
+
+from __future__ import annotations
+
+import math
+import os
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from polygolf.engine.loading.scene import Scene, build_scene
+from polygolf.engine.physics.settings import LINEAR_SLOP
+from polygolf.engine.systems.drag import decay
+
+from .conftest import PRESET_NAMES
+from .helpers import scene_sim
+
+APOTHEM = 0.35 * math.cos(math.pi / 6)  # the hexagon's flat face from its centre
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_a_ball_passing_2mm_above_a_corner_is_untouched(preset):
+    with scene_sim("ghost-corner", preset) as sim:
+        sim.run(1.0)
+        ball = sim.body("ball")
+        assert (ball.vx, ball.vy, ball.spin) == pytest.approx((8.0, 0.0, 0.0), abs=1e-9)
+        assert ball.x == pytest.approx(7.0, abs=1e-6)  # and on time
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+@pytest.mark.parametrize("gap", [0.0, 0.0005, 0.004])
+def test_grazing_a_corner_level_or_just_above_is_no_hit(preset, gap):
+    scene = Scene.model_validate({
+        "name": "graze", "walls": [{"box": {"center": [1.0, -0.5], "half": [1.0, 0.5]}}],
+        "bodies": [{"name": "ball", "shape": {"regular": 6, "radius": 0.35}, "position": [-1.0, APOTHEM + gap],
+                    "velocity": [8.0, 0.0], "restitution": 0.6, "friction": 0.3}]})
+    with build_scene(scene, preset) as sim:
+        sim.run(1.0)
+        ball = sim.body("ball")
+        assert (ball.vx, ball.vy, ball.spin) == pytest.approx((8.0, 0.0, 0.0), abs=1e-9)
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_a_frictionless_slide_across_flush_boxes_keeps_its_speed(preset):
+    with scene_sim("seam-slide", preset) as sim:
+        sim.run(1.0)  # three seams crossed (x = 2, 4, 6)
+        ball = sim.body("ball")
+        assert ball.x > 6.2
+        assert (ball.vx, ball.vy, ball.spin) == pytest.approx((6.0, 0.0, 0.0), abs=1e-9)
+        assert sim.metrics.max_penetration <= LINEAR_SLOP + 1e-3
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_a_body_dropped_8mm_rests_touching_the_floor(preset):
+    with scene_sim("hover-drop", preset) as sim:
+        sim.run(1.5)
+        ball = sim.body("ball")
+        gap = ball.y - 0.2 * math.sqrt(0.5)  # the square's bottom face above the floor's top (y = 0)
+        assert ball.asleep
+        assert -LINEAR_SLOP <= gap <= LINEAR_SLOP, gap
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_the_dog_leg_rail_shot_keeps_its_line_past_the_seam(preset):
+    with scene_sim("dog-leg-rail", preset) as sim:
+        sim.run(1.6)
+        ball = sim.body("ball")
+        assert ball.x > 12.15  # past the flush corner at x = 11.85 and the rail's end
+        assert (ball.vy, ball.spin) == pytest.approx((0.0, 0.0), abs=1e-9)
+        assert ball.y == pytest.approx(5.85 - APOTHEM, abs=1e-6)
+        # Only the green slows it: the exact drag law (linear 0.4/s, rolling 1.2 m/s²) over 1.6 s.
+        assert ball.vx == pytest.approx(decay(10.0, 0.4, 1.2, 1.6), rel=1e-9)
+
+
+@settings(max_examples=int(os.environ.get("POLYGOLF_PROPERTY_EXAMPLES", "60")), deadline=None)
+@given(shape=st.sampled_from([{"regular": n} for n in (3, 4, 5, 6, 8, 12)] + [{"star": [5, 2]}, {"star": [7, 3]}]),
+       radius=st.floats(0.1, 0.5), angle=st.floats(0, 360), speed=st.floats(1.0, 25.0),
+       height=st.floats(0.0005, 0.3), boxes=st.integers(2, 5), preset=st.sampled_from(PRESET_NAMES))
+def test_random_shapes_past_random_corners_above_random_seamed_rails_are_untouched(shape, radius, angle, speed,
+                                                                                     height, boxes, preset):
+    """A shape flying level over a seamed row of boxes, `height` above it at its lowest, never touches
+    it: whatever its outline, angle and speed, it keeps its velocity."""
+    from polygolf.engine.loading.scene import ShapeSpec
+    from polygolf.engine.physics.polygon import normalise
+
+    outline = ShapeSpec(**shape, radius=radius).outline()
+    turned = normalise([(x * math.cos(math.radians(angle)) - y * math.sin(math.radians(angle)),
+                         x * math.sin(math.radians(angle)) + y * math.cos(math.radians(angle))) for x, y in outline])[0]
+    lowest = min(y for _, y in turned)
+    walls = [{"box": {"center": [2.0 * k + 1.0, -0.5], "half": [1.0, 0.5]}} for k in range(boxes)]
+    scene = Scene.model_validate({"name": "fly", "walls": walls, "bodies": [
+        {"name": "ball", "shape": {**shape, "radius": radius}, "angle": angle, "position": [-1.0, height - lowest],
+         "velocity": [speed, 0.0], "restitution": 0.6, "friction": 0.5}]})
+    with build_scene(scene, preset) as sim:
+        sim.run(2.0 * boxes / speed + 0.1)
+        ball = sim.body("ball")
+        assert (ball.vx, ball.vy, ball.spin) == pytest.approx((speed, 0.0, 0.0), abs=1e-9)
+
+
+@settings(max_examples=int(os.environ.get("POLYGOLF_PROPERTY_EXAMPLES", "60")), deadline=None)
+@given(sides=st.sampled_from([3, 4, 5, 6, 8, 12]), radius=st.floats(0.1, 0.5), speed=st.floats(0.5, 25.0),
+       widths=st.lists(st.floats(0.3, 3.0), min_size=2, max_size=6), preset=st.sampled_from(PRESET_NAMES),
+       ceiling=st.booleans())
+def test_random_shapes_sliding_along_random_seamed_rails_keep_their_speed(sides, radius, speed, widths, preset,
+                                                                          ceiling):
+    """A regular polygon with a face flat on a rail of flush boxes of random widths (a floor, or a
+    ceiling it slides under), moving along it: nothing presses it into the rail, so no seam may
+    change its velocity or turn it."""
+    from polygolf.engine.loading.scene import ShapeSpec
+    from polygolf.engine.physics.polygon import edge_normals
+
+    nx, ny = edge_normals(ShapeSpec(regular=sides, radius=radius).outline())[0]
+    turn = -90.0 - math.degrees(math.atan2(ny, nx))  # turns that face's normal straight down
+    scene_angle = turn if not ceiling else turn + 180.0
+    apothem = radius * math.cos(math.pi / sides)
+    edges = [0.0]
+    for w in widths:
+        edges.append(edges[-1] + w)
+    side = 1.0 if not ceiling else -1.0
+    walls = [{"box": {"center": [(a + b) / 2, -0.5 * side], "half": [(b - a) / 2, 0.5]}} for a, b in zip(edges, edges[1:])]
+    scene = Scene.model_validate({"name": "slide", "walls": walls, "bodies": [
+        {"name": "ball", "shape": {"regular": sides, "radius": radius}, "angle": scene_angle,
+         "position": [radius, side * apothem], "velocity": [speed, 0.0], "restitution": 0.6, "friction": 0.8}]})
+    with build_scene(scene, preset) as sim:
+        sim.run(min(1.0, (edges[-1] - 2 * radius) / speed))
+        ball = sim.body("ball")
+        assert (ball.vx, ball.vy, ball.spin) == pytest.approx((speed, 0.0, 0.0), abs=1e-9)

@@ -120,7 +120,8 @@ def test_random_shapes_sliding_along_random_seamed_rails_keep_their_speed(sides,
     for w in widths:
         edges.append(edges[-1] + w)
     side = 1.0 if not ceiling else -1.0
-    walls = [{"box": {"center": [(a + b) / 2, -0.5 * side], "half": [(b - a) / 2, 0.5]}} for a, b in zip(edges, edges[1:])]
+    walls = [{"box": {"center": [(a + b) / 2, -0.5 * side], "half": [(b - a) / 2, 0.5]}}
+             for a, b in zip(edges, edges[1:])]
     scene = Scene.model_validate({"name": "slide", "walls": walls, "bodies": [
         {"name": "ball", "shape": {"regular": sides, "radius": radius}, "angle": scene_angle,
          "position": [radius, side * apothem], "velocity": [speed, 0.0], "restitution": 0.6, "friction": 0.8}]})

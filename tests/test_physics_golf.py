@@ -129,3 +129,22 @@ def test_random_shapes_sliding_along_random_seamed_rails_keep_their_speed(sides,
         sim.run(min(1.0, (edges[-1] - 2 * radius) / speed))
         ball = sim.body("ball")
         assert (ball.vx, ball.vy, ball.spin) == pytest.approx((speed, 0.0, 0.0), abs=1e-9)
+
+
+def _one_d(m1: float, m2: float, v1: float, v2: float, e: float) -> tuple[float, float]:
+    """Velocities after a central 1-D impact with restitution e."""
+    p, closing = m1 * v1 + m2 * v2, v1 - v2
+    return (p - m2 * e * closing) / (m1 + m2), (p + m1 * e * closing) / (m1 + m2)
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+@pytest.mark.parametrize("name", ["body-tunnel", "plate-tunnel"])
+def test_fast_bodies_never_pass_through_each_other(preset, name):
+    with scene_sim(name, preset) as sim:
+        (na, a), (nb, b) = sim.bodies()
+        before = (a.mass, b.mass, a.vx, b.vx)
+        sim.run(0.2)
+        assert a.x < b.x, f"{na} passed through {nb}"
+        expected = _one_d(*before, e=0.25)
+        assert (a.vx, b.vx) == pytest.approx(expected, rel=1e-6)
+        assert sim.metrics.max_energy <= sim.metrics.initial_energy * (1.0 + 1e-12)

@@ -131,7 +131,7 @@ SCENE_PIPELINES = {
     "fast-spin": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
     "flat-wall": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
     "long-roll": ["integrate", "spin", "drag"],
-    "mass-ratio": ["integrate", "spin", *CONTACT, "restitution"],
+    "mass-ratio": ["integrate", "spin", "ccd", *CONTACT, "restitution"],  # bodies, too, are not skipped
     "pile": ["integrate", "spin", "gravity", "ccd", *CONTACT, "restitution"],
     "resting-contact": ["integrate", "spin", "gravity", "drag", "ccd", *CONTACT, "restitution"],
     "star-landing": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
@@ -140,6 +140,8 @@ SCENE_PIPELINES = {
     "ghost-corner": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
     "seam-slide": ["integrate", "spin", "gravity", "ccd", *CONTACT],
     "hover-drop": ["integrate", "spin", "gravity", "ccd", *CONTACT],
+    "body-tunnel": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
+    "plate-tunnel": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
     "dog-leg-rail": ["integrate", "spin", "drag", "ccd", *CONTACT, "restitution", "cup"],
 }
 FRICTION = {"corner", "deep-overlap", "fast-spin", "pile", "resting-contact", "ghost-corner", "hover-drop",

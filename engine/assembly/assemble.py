@@ -31,6 +31,7 @@ def make_collider(outline: polygon.Outline, material: Material) -> Collider:
         normals=tuple(polygon.edge_normals(p) for p in pieces),
         radius=polygon.bounding_radius(outline), material=material,
         piece_reach=tuple(polygon.bounding_radius(p) for p in pieces),
+        thickness=min(polygon.min_width(p) for p in pieces),
     )
 
 

@@ -35,13 +35,14 @@ def derive_effects(spec: WorldSpec, substeps: int) -> dict[str, str]:
             if best is not None:
                 reasons[key] = best
 
-    if spec.walls and bodies:
+    if spec.touchable and bodies:
         fastest = max(bodies, key=lambda b: b.fastest)
         reach = fastest.fastest * FRAME_DT / substeps
+        what = "walls" if spec.walls else "bodies"
         if reach > LINEAR_SLOP:
-            reasons["ccd"] = f"{fastest.name} moves up to {reach:.3g} m a substep: walls must not be skipped"
+            reasons["ccd"] = f"{fastest.name} moves up to {reach:.3g} m a substep: {what} must not be skipped"
         elif spec.gravity != (0.0, 0.0):
-            reasons["ccd"] = "gravity speeds bodies up: walls must not be skipped"
+            reasons["ccd"] = f"gravity speeds bodies up: {what} must not be skipped"
     reasons.update(spec.content_effects)
     return reasons
 

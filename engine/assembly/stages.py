@@ -49,8 +49,8 @@ def _touchable(spec: WorldSpec, knobs: Knobs) -> bool:
     return spec.touchable
 
 
-def _walls_and_ccd_knob(spec: WorldSpec, knobs: Knobs) -> bool:
-    return bool(spec.walls) and spec.touchable and knobs.ccd
+def _touchable_and_ccd_knob(spec: WorldSpec, knobs: Knobs) -> bool:
+    return spec.touchable and knobs.ccd
 
 
 @dataclass(frozen=True)
@@ -76,7 +76,7 @@ STAGES: tuple[Stage, ...] = (
     Stage("sand", SandProcessor, "sand"),
     Stage("ice", IceProcessor, "ice"),
     Stage("drag", DragProcessor, "drag"),
-    Stage("ccd", CCDProcessor, "ccd", needs=_walls_and_ccd_knob),
+    Stage("ccd", CCDProcessor, "ccd", needs=_touchable_and_ccd_knob),
     Stage("broadphase", BroadphaseProcessor, needs=_touchable,
           why="walls or other bodies can be touched: grid of bounding boxes"),
     Stage("narrowphase", NarrowphaseProcessor, needs=_touchable,

@@ -20,6 +20,7 @@ class Collider:
     radius: float  # bounding radius about the centroid
     material: Material
     piece_reach: tuple[float, ...] = ()  # per piece, farthest vertex from the centroid
+    thickness: float = 0.0  # the thinnest width of any piece: a smaller relative step cannot pass through it
     _pose: tuple[float, float, float] = (math.nan, math.nan, math.nan)
     _world_pieces: list[list[Vec]] = field(default_factory=list)
     _world_normals: list[list[Vec]] = field(default_factory=list)

@@ -282,6 +282,18 @@ def _merge_along_shared_edge(p: list[int], q: list[int]) -> list[int] | None:
     return None
 
 
+def min_width(vertices: Sequence[Vec]) -> float:
+    """The thinnest width of a convex polygon: over its edges, the farthest vertex from the edge's line."""
+    n = len(vertices)
+    best = math.inf
+    for i in range(n):
+        (ax, ay), (bx, by) = vertices[i], vertices[(i + 1) % n]
+        length = math.hypot(bx - ax, by - ay)
+        if length > 0.0:
+            best = min(best, max(abs(cross(bx - ax, by - ay, x - ax, y - ay)) / length for x, y in vertices))
+    return best
+
+
 def edge_normals(vertices: Sequence[Vec]) -> tuple[Vec, ...]:
     """Outward unit normals of a CCW outline; normal k belongs to edge (k, k+1)."""
     out = []

@@ -1,4 +1,5 @@
-"""Time of impact of a moving convex piece against a static convex polygon, by conservative advancement.
+"""Time of impact of a moving convex piece against a static convex polygon (or another moving piece),
+by conservative advancement.
 
 Mirtich's conservative advancement: at time t the separating-axis distance d is a lower bound on the
 true distance, and no point of the piece can close it faster than a bound mu, so the piece may safely
@@ -61,12 +62,48 @@ def time_of_impact(
     def separations(t: float) -> list[float]:
         """Separation along every candidate axis at time t: wall faces first, then the piece's."""
         verts = _pose_vertices(piece, x0 + t * dx, y0 + t * dy, a0 + t * da)
-        seps = [min((vx - wx) * nx + (vy - wy) * ny for vx, vy in verts)
-                for (nx, ny), (wx, wy) in zip(wall_normals, wall)]
-        seps += [min((wx - vx) * nx + (wy - vy) * ny for wx, wy in wall)
-                 for (nx, ny), (vx, vy) in zip(_pose_normals(piece_normals, a0 + t * da), verts)]
-        return seps
+        normals = _pose_normals(piece_normals, a0 + t * da)
+        return _axis_separations(wall, wall_normals, verts) + _axis_separations(verts, normals, wall)
 
+    return _advance(separations, rates, target, tolerance, allowance)
+
+
+def pair_time_of_impact(
+    piece_a: tuple[Vec, ...], normals_a: tuple[Vec, ...], reach_a: float,
+    start_a: tuple[float, float, float], end_a: tuple[float, float, float],
+    piece_b: tuple[Vec, ...], normals_b: tuple[Vec, ...], reach_b: float,
+    start_b: tuple[float, float, float], end_b: tuple[float, float, float],
+    target: float, tolerance: float, allowance: float,
+) -> float | None:
+    """The same for two pieces that both move (two bodies): every axis turns with its body, so every
+    axis takes the bound on their relative motion, |dA - dB| + |ΔθA|·RA + |ΔθB|·RB."""
+    rate = (math.hypot(end_a[0] - start_a[0] - end_b[0] + start_b[0], end_a[1] - start_a[1] - end_b[1] + start_b[1])
+            + abs(end_a[2] - start_a[2]) * reach_a + abs(end_b[2] - start_b[2]) * reach_b)
+    if rate <= 0.0:
+        return None
+
+    def pose(start: tuple[float, float, float], end: tuple[float, float, float], t: float) -> tuple[float, ...]:
+        return tuple(s + t * (e - s) for s, e in zip(start, end))
+
+    def separations(t: float) -> list[float]:
+        xa, ya, aa = pose(start_a, end_a, t)
+        xb, yb, ab = pose(start_b, end_b, t)
+        va, vb = _pose_vertices(piece_a, xa, ya, aa), _pose_vertices(piece_b, xb, yb, ab)
+        return (_axis_separations(va, _pose_normals(normals_a, aa), vb)
+                + _axis_separations(vb, _pose_normals(normals_b, ab), va))
+
+    return _advance(separations, [rate] * (len(piece_a) + len(piece_b)), target, tolerance, allowance)
+
+
+def _axis_separations(verts: list[Vec] | tuple[Vec, ...], normals, others: list[Vec] | tuple[Vec, ...]
+                      ) -> list[float]:
+    """Separation of `others` from each face of `verts`."""
+    return [min((ox - vx) * nx + (oy - vy) * ny for ox, oy in others) for (nx, ny), (vx, vy) in zip(normals, verts)]
+
+
+def _advance(separations, rates: list[float], target: float, tolerance: float, allowance: float) -> float | None:
+    """Conservative advancement over t in [0, 1]: the first t at which the separating-axis distance
+    comes within `target` (see time_of_impact for `allowance`), or None."""
     seps = separations(0.0)
     # Already touching (sliding along the wall, say): only sinking `allowance` deeper counts.
     level = target if max(seps) >= target + tolerance else min(max(seps), target) - allowance
@@ -82,7 +119,6 @@ def time_of_impact(
         if max(seps) < level + tolerance:
             return t
     return t
-
 
 def reaches(collider, body, wall: tuple[Vec, ...], wall_normals: tuple[Vec, ...], dt: float) -> bool:
     """Whether the body, moving on with its velocity for dt, would press into the wall piece (by more

@@ -4,49 +4,104 @@ import esper
 
 from polygolf.engine.components import Body, Collider, Wall
 from polygolf.engine.components.resources import Resources
+from polygolf.engine.physics.grid import SpatialGrid
 from polygolf.engine.physics.settings import LINEAR_SLOP, TOI_TARGET
-from polygolf.engine.physics.toi import time_of_impact
+from polygolf.engine.physics.toi import pair_time_of_impact, time_of_impact
 
 
 class CCDProcessor(esper.Processor):
-    """Continuous collision against walls: a body whose motion this substep would carry it into or
-    through a wall is moved back to its time of impact; the discrete contact that follows bounces it,
-    and the time the motion lost is made up in the next substep (`BodyScratch.lag`), so a fast body
-    that bounces ends up where it should rather than a substep behind."""
+    """Continuous collision: a body whose motion this substep would carry it into or through a wall,
+    or into or through another body, is moved back to its time of impact; the discrete contact that
+    follows bounces it, and the time the motion lost is made up in the next substep
+    (`BodyScratch.lag`), so a fast body that bounces ends up where it should rather than a substep
+    behind. Of two bodies that meet, both go back to that time (a kinematic one never does)."""
 
     name = "ccd"
 
     def __init__(self, res: Resources) -> None:
-        self.statics, self.stats = res.statics, res.stats
+        self.statics, self.stats, self.config = res.statics, res.stats, res.config
+        self._swept = SpatialGrid(res.statics.grid.cell_size)
 
     def process(self) -> None:
-        grid = self.statics.grid
-        for _, (body, col) in esper.get_components(Body, Collider):
-            if body.asleep or body.inv_mass == 0.0:
-                continue
-            s = body.scratch
-            dx, dy, da = body.x - s.x0, body.y - s.y0, body.angle - s.angle0
-            if math.hypot(dx, dy) + abs(da) * col.radius < LINEAR_SLOP:
+        bodies = esper.get_components(Body, Collider)
+        first: dict[int, float] = {}
+        for ent, (body, col) in bodies:
+            if body.asleep or body.inv_mass == 0.0 or _travel(body, col) < LINEAR_SLOP:
                 continue  # small motions cannot skip anything: the discrete contact handles them
-            r = col.radius + TOI_TARGET
-            box = (min(s.x0, body.x) - r, min(s.y0, body.y) - r, max(s.x0, body.x) + r, max(s.y0, body.y) + r)
-            found = grid.query(box)
-            if not found:
+            t = self._first_wall_hit(body, col)
+            if t < 1.0:
+                first[ent] = t
+        if len(bodies) > 1:
+            # Two bodies can pass through each other only if their steps add up to half the thinner
+            # one's width: with no body stepping a quarter of the thinnest, no pair can.
+            thinnest = min(col.thickness for _, (_, col) in bodies)
+            if any(not body.asleep and _travel(body, col) >= 0.25 * thinnest for _, (body, col) in bodies):
+                self._body_hits(bodies, first)
+        for ent, t in first.items():
+            body = esper.component_for_entity(ent, Body)
+            s = body.scratch
+            body.x = s.x0 + t * (body.x - s.x0)
+            body.y = s.y0 + t * (body.y - s.y0)
+            body.angle = s.angle0 + t * (body.angle - s.angle0)
+            # The motion covered (dt + lag) this substep; the part after the impact is owed.
+            s.lag = (1.0 - t) * s.moved_for
+            self.stats.toi_hits += 1
+
+    def _first_wall_hit(self, body: Body, col: Collider) -> float:
+        s = body.scratch
+        r = col.radius + TOI_TARGET
+        box = (min(s.x0, body.x) - r, min(s.y0, body.y) - r, max(s.x0, body.x) + r, max(s.y0, body.y) + r)
+        start, end = (s.x0, s.y0, s.angle0), (body.x, body.y, body.angle)
+        first = 1.0
+        for wall_ent, k in self.statics.grid.query(box):
+            wall = esper.component_for_entity(wall_ent, Wall)
+            for i, piece in enumerate(col.pieces):
+                t = time_of_impact(piece, col.normals[i], col.piece_reach[i], start, end,
+                                   wall.pieces[k], wall.normals[k], TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP)
+                if t is not None and t < first:
+                    first = t
+        return first
+
+    def _body_hits(self, bodies: list, first: dict[int, float]) -> None:
+        """Pairs of bodies whose swept boxes overlap and that move fast relative to each other."""
+        grid = self._swept
+        grid.clear()
+        for ent, (body, col) in bodies:
+            s, r = body.scratch, col.radius + TOI_TARGET
+            grid.insert(ent, (min(s.x0, body.x) - r, min(s.y0, body.y) - r, max(s.x0, body.x) + r,
+                              max(s.y0, body.y) + r))
+        meet = self.config.collide_bodies
+        for ea, eb in grid.pairs():
+            a, col_a = esper.component_for_entity(ea, Body), esper.component_for_entity(ea, Collider)
+            b, col_b = esper.component_for_entity(eb, Body), esper.component_for_entity(eb, Collider)
+            if not (a.inv_mass or b.inv_mass) or (a.inv_mass and b.inv_mass and not meet):
                 continue
-            start, end = (s.x0, s.y0, s.angle0), (body.x, body.y, body.angle)
-            first = 1.0
-            for wall_ent, k in found:
-                wall = esper.component_for_entity(wall_ent, Wall)
-                for i, piece in enumerate(col.pieces):
-                    t = time_of_impact(piece, col.normals[i], col.piece_reach[i], start, end,
-                                       wall.pieces[k], wall.normals[k], TOI_TARGET, 0.25 * LINEAR_SLOP,
-                                       LINEAR_SLOP)
-                    if t is not None and t < first:
-                        first = t
-            if first < 1.0:
-                body.x = s.x0 + first * dx
-                body.y = s.y0 + first * dy
-                body.angle = s.angle0 + first * da
-                # The motion covered (dt + lag) this substep; the part after the impact is owed.
-                s.lag = (1.0 - first) * s.moved_for
-                self.stats.toi_hits += 1
+            if (a.asleep or not a.inv_mass) and (b.asleep or not b.inv_mass) or \
+                    _relative_travel(a, col_a, b, col_b) < 0.5 * min(col_a.thickness, col_b.thickness):
+                continue  # a step shorter than half the thinner body's width leaves them overlapping at worst
+            sa, sb = a.scratch, b.scratch
+            start_a, end_a = (sa.x0, sa.y0, sa.angle0), (a.x, a.y, a.angle)
+            start_b, end_b = (sb.x0, sb.y0, sb.angle0), (b.x, b.y, b.angle)
+            hit = 1.0
+            for i, piece_a in enumerate(col_a.pieces):
+                for j, piece_b in enumerate(col_b.pieces):
+                    t = pair_time_of_impact(piece_a, col_a.normals[i], col_a.piece_reach[i], start_a, end_a,
+                                            piece_b, col_b.normals[j], col_b.piece_reach[j], start_b, end_b,
+                                            TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP)
+                    if t is not None and t < hit:
+                        hit = t
+            if hit < 1.0:
+                for ent, body in ((ea, a), (eb, b)):
+                    if body.inv_mass and not body.asleep:
+                        first[ent] = min(first.get(ent, 1.0), hit)
+
+
+def _travel(body: Body, col: Collider) -> float:
+    s = body.scratch
+    return math.hypot(body.x - s.x0, body.y - s.y0) + abs(body.angle - s.angle0) * col.radius
+
+
+def _relative_travel(a: Body, col_a: Collider, b: Body, col_b: Collider) -> float:
+    sa, sb = a.scratch, b.scratch
+    return (math.hypot(a.x - sa.x0 - b.x + sb.x0, a.y - sa.y0 - b.y + sb.y0)
+            + abs(a.angle - sa.angle0) * col_a.radius + abs(b.angle - sb.angle0) * col_b.radius)

@@ -148,3 +148,27 @@ def test_fast_bodies_never_pass_through_each_other(preset, name):
         expected = _one_d(*before, e=0.25)
         assert (a.vx, b.vx) == pytest.approx(expected, rel=1e-6)
         assert sim.metrics.max_energy <= sim.metrics.initial_energy * (1.0 + 1e-12)
+
+
+def test_a_windmill_that_would_crush_the_ball_against_a_wall_is_refused(tmp_path):
+    import shutil
+
+    from polygolf.engine.golf.holes import load_hole
+    from polygolf.engine.loading.course import load_library
+    from polygolf.engine.loading.paths import HOLES_DIR
+    from polygolf.engine.loading.yamlsource import ContentError
+
+    tiles = (HOLES_DIR / "tiles.yaml").read_text().replace("half: [1.9, 0.18]", "half: [2.3, 0.18]")
+    (tmp_path / "tiles.yaml").write_text(tiles)
+    shutil.copy(HOLES_DIR / "windmill.yaml", tmp_path / "windmill.yaml")
+    with pytest.raises(ContentError, match=r"windmill.yaml:\d+: tiles\[1\]\.pattern: a windmill's sweep comes "
+                                           r"within 0\.54 m of a wall: the ball \(0\.9 m across\) needs 0\.91 m"):
+        load_hole(tmp_path / "windmill.yaml", load_library(tmp_path / "tiles.yaml"))
+
+
+def test_water_never_puts_the_ball_back_in_a_windmills_sweep():
+    from polygolf.engine.components import Water
+
+    water = Water(keep_out=((10.0, 3.0, 2.4),), fallback=(3.0, 3.0))
+    assert water.put_back(11.0, 3.5) == (3.0, 3.0)  # in the sweep: the tee instead
+    assert water.put_back(6.0, 3.0) == (6.0, 3.0)  # clear of it: where it last rested

@@ -44,9 +44,18 @@ class Slope:
 
 @dataclass(slots=True)
 class Water:
-    """A ball whose centre goes in costs `penalty` strokes and goes back where it last rested."""
+    """A ball whose centre goes in costs `penalty` strokes and goes back where it last rested, unless
+    that spot is in a windmill's sweep (`keep_out`: circles x, y, r), where an arm would crush it;
+    then it goes to `fallback` (the tee)."""
 
     penalty: int = 1
+    keep_out: tuple[tuple[float, float, float], ...] = ()
+    fallback: tuple[float, float] | None = None
+
+    def put_back(self, x: float, y: float) -> tuple[float, float]:
+        if self.fallback is not None and any((x - cx) ** 2 + (y - cy) ** 2 < r * r for cx, cy, r in self.keep_out):
+            return self.fallback
+        return x, y
 
 
 @dataclass(slots=True)

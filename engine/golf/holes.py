@@ -12,6 +12,7 @@ from polygolf.engine.loading.course import CoursesFile, HoleSpec, ParsedHole, Ti
 from polygolf.engine.loading.paths import HOLES_DIR, content_roots
 from polygolf.engine.loading.yamlsource import ContentError, format_loc, line_of, load_yaml, validate
 from polygolf.engine.physics.polygon import bounding_radius
+from polygolf.engine.physics.settings import LINEAR_SLOP
 
 
 @dataclass(slots=True)
@@ -35,6 +36,7 @@ def load_hole(path: str | Path, library: TileLibrary) -> Hole:
                            "the cup cannot be reached from the tee through open borders")
     layout = layout_hole(spec, library)
     _check_tee_and_cup(parsed, layout, library)
+    _check_windmill_room(parsed, layout, library)
     return Hole(id=parsed.path.stem, path=parsed.path, spec=spec, library=library, layout=layout)
 
 
@@ -51,6 +53,19 @@ def _check_tee_and_cup(parsed: ParsedHole, layout: HoleLayout, library: TileLibr
         for outline, (px, py), _ in layout.windmills:
             if math.hypot(x - px, y - py) < bounding_radius(outline) + need:
                 raise parsed.error(loc, f"the {what} at the tile's centre is within a windmill's sweep")
+
+
+def _check_windmill_room(parsed: ParsedHole, layout: HoleLayout, library: TileLibrary) -> None:
+    """A windmill's sweep must leave the ball room to pass every wall: a narrower gap would crush a
+    ball between arm and wall (a kinematic arm cannot be pushed back)."""
+    room = 2.0 * library.ball.radius + 2.0 * LINEAR_SLOP
+    for outline, (px, py), _ in layout.windmills:
+        gap = point_clearance(layout, px, py) - bounding_radius(outline)
+        if gap < room:
+            tile = next(i for i, (x0, y0, x1, y1) in enumerate(layout.floor) if x0 <= px <= x1 and y0 <= py <= y1)
+            raise parsed.error(("tiles", tile, "pattern"),
+                               f"a windmill's sweep comes within {max(gap, 0.0):.2f} m of a wall: the ball "
+                               f"({2 * library.ball.radius:g} m across) needs {room:.2f} m to pass, not to be crushed")
 
 
 @dataclass(slots=True)

@@ -24,10 +24,11 @@ from polygolf.engine.components import (
 from polygolf.engine.golf.holes import Hole
 from polygolf.engine.golf.layout import ball_outline
 from polygolf.engine.loading.scene import ShapeSpec
+from polygolf.engine.physics.polygon import bounding_radius
 from polygolf.engine.physics.settings import MAX_SHOT_SPEED
 
 _ZONE_WORDS = {"sand": "bunker", "water": "pond", "ice": "ice sheet", "slope": "slope"}
-_MARKERS = {"sand": Sand, "ice": Ice, "water": Water}
+_MARKERS = {"sand": Sand, "ice": Ice}
 
 
 def _count(n: int, word: str) -> str:
@@ -53,10 +54,17 @@ def hole_spec(hole: Hole, shape: ShapeSpec) -> WorldSpec:
         (Cup(layout.cup[0], layout.cup[1], lib.cup.radius, lib.cup.max_speed),),
         (HoleState(par=spec.par, max_strokes=spec.max_strokes or lib.max_strokes),),
     ]
+    sweeps = tuple((px, py, bounding_radius(local) + lib.ball.radius) for local, (px, py), _ in layout.windmills)
     for kind, zone, push in layout.zones:
         xs, ys = zip(*zone)
         region = Region(zone, (min(xs), min(ys), max(xs), max(ys)))
-        entities.append((region, Slope(push) if kind == "slope" else _MARKERS[kind]()))
+        if kind == "slope":
+            marker: object = Slope(push)
+        elif kind == "water":
+            marker = Water(keep_out=sweeps, fallback=layout.tee)  # never back into a windmill's sweep
+        else:
+            marker = _MARKERS[kind]()
+        entities.append((region, marker))
     if spec.launch is not None:
         entities.append((Launcher(spec.launch.velocity, spec.launch.every, layout.tee),))
     windmills = [KinematicPart("windmill", local, pivot, speed, extras=(Windmill(speed),))

@@ -16,6 +16,8 @@ from polygolf.engine.physics.polygon import Vec
 # Prefer polygon A's face unless B's is clearly better: stops the reference face flickering between
 # the two polygons when they are nearly parallel, which would spoil warm starting.
 _REFERENCE_TOLERANCE = 5e-4
+# At a seam, the wall's face replaces A's as the reference only if it is about as near (m).
+_SEAM_SWITCH = 0.005
 
 
 @dataclass(slots=True)
@@ -89,9 +91,10 @@ def collide_polygons(
     inc_edge = _incident_edge(inc_n, ref_n[edge], internal_b if ref_is_a else frozenset())
     count_inc = len(inc_v)
     i1, i2 = inc_edge, (inc_edge + 1) % count_inc
-    if ref_is_a and (i1 in hidden_b or i2 in hidden_b):
+    if ref_is_a and (i1 in hidden_b or i2 in hidden_b) and sep_b >= sep_a - _SEAM_SWITCH:
         # A's face would meet a wall corner that lies on a flat stretch of wall: the wall's own face
-        # there is the true surface, so it is the reference (a slanted face would make a ghost hit).
+        # there, as near as A's, is the true surface, so it is the reference (a slanted face of A
+        # would make a ghost hit). Otherwise the hidden corner is just left out below.
         ref_v, ref_n, inc_v, inc_n, edge, ref_is_a = verts_b, normals_b, verts_a, normals_a, edge_b, False
         inc_edge = _incident_edge(inc_n, ref_n[edge], frozenset())
         count_inc = len(inc_v)

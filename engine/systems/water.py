@@ -20,7 +20,7 @@ class WaterProcessor(esper.Processor):
                 continue
             for _, (region, water) in zones:
                 if region.contains(body.x, body.y):
-                    body.x, body.y = ball.rest_x, ball.rest_y
+                    body.x, body.y = water.put_back(ball.rest_x, ball.rest_y)
                     body.rest()
                     self.events.emit("penalty", water.penalty)
                     break

@@ -23,7 +23,11 @@ capped, so a soft shot never carries a wild spin.
 The cup: the ball drops only if it is slow enough over the cup; fastest over the middle, not at all \
 on the rim. Too fast and it lips out.
 
-Scoring: each hole has a par. After 10 strokes the ball is picked up. R restarts a hole; Esc pauses."""
+Scoring: each hole has a par. After 10 strokes the ball is picked up. R puts your ball back on the tee \
+for a penalty stroke (the strokes taken stay). L shows your last shot again; Esc pauses.
+
+Friends: up to four play on one machine, in turn (one stroke each, in seat order); every ball is on \
+the green and they knock each other about. Fewest strokes wins."""
 
 
 class GuideView(UIView):
@@ -45,7 +49,7 @@ class GuideView(UIView):
         self.ui.add(anchor)
 
     def on_continue(self, _event=None) -> None:
-        self.game.guide_seen = True
+        self.game.mark_guide_seen()
         self.then()
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:

@@ -19,7 +19,6 @@ from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.loading.paths import data_dir
 from polygolf.game.cli import main
 from polygolf.game.record import load_record
-from polygolf.game.replay import load_for_replay, verify
 from polygolf.game.session import Game, Round, RoundPlay, par_text, penalty_text, strokes_text
 from polygolf.game.shapes import CATALOGUE
 from polygolf.game.store import Store

@@ -11,11 +11,11 @@ from polygolf.game.views.navigation import Navigator
 from polygolf.game.views.widgets import themed_button, title
 
 
-def result_line(result: HoleResult) -> str:
-    """'Birdie: 2 strokes (+1 penalty stroke), par 3'."""
-    name = "Picked up" if result.picked_up else golf_name(result.strokes, result.par)
+def result_line(result: HoleResult, named: bool) -> str:
+    """'2 strokes (+1 penalty stroke)'; `named`: 'Birdie, 2 strokes' (the headline names it alone)."""
     penalty = f" {penalty_text(result.penalties)}" if result.penalties else ""
-    return f"{name}: {strokes_text(result.strokes)}{penalty}, par {result.par}"
+    name = "Picked up" if result.picked_up else golf_name(result.strokes, result.par)
+    return f"{name + ', ' if named else ''}{strokes_text(result.strokes)}{penalty}"
 
 
 class BetweenView(UIView):
@@ -32,14 +32,14 @@ class BetweenView(UIView):
         headline = ("Picked up" if first.picked_up else golf_name(first.strokes, first.par)) if alone \
             else f"Hole {first.number} done"
         self.headline = title(headline, theme, 44)
-        self.detail = arcade.Text(f"Hole {first.number} · {first.name}", 0, 0, theme.rgba("text"), 18,
-                                  anchor_x="center", anchor_y="center")
+        self.detail = arcade.Text(f"Hole {first.number} · {first.name} · par {first.par}", 0, 0,
+                                  theme.rgba("text"), 18, anchor_x="center", anchor_y="center")
         lines = []
         for seat, result in enumerate(results):
             total = round_.total_strokes(seat)
-            lines.append(f"{'' if alone else round_.players[seat] + ' · '}{result_line(result)} · total "
-                         f"{strokes_text(total)} ({par_text(total - round_.total_par(seat))})")
-        self.lines = arcade.Text("\n".join(lines), 0, 0, theme.rgba("text"), 16, anchor_x="center", anchor_y="top",
+            lines.append(f"{'' if alone else round_.players[seat] + ': '}{result_line(result, not alone)}"
+                         f"  ·  total so far {strokes_text(total)} ({par_text(total - round_.total_par(seat))})")
+        self.lines = arcade.Text("\n".join(lines), 0, 0, theme.rgba("text"), 17, anchor_x="center", anchor_y="top",
                                  multiline=True, width=1100, align="center")
         hole = round_.course.holes[first.number - 1]
         best = game.best_hole(hole.id) if not isinstance(hole, Exception) else None
@@ -69,16 +69,16 @@ class BetweenView(UIView):
 
     def on_draw_before_ui(self) -> None:
         w, h = self.window.width, self.window.height
-        for text, y in ((self.headline, h - 110), (self.detail, h - 165)):
+        for text, y in ((self.headline, h - 130), (self.detail, h - 195)):
             text.position = (w / 2, y)
             text.draw()
-        self.lines.position = (w / 2, h - 200)
+        self.lines.position = (w / 2, h - 240)
         self.lines.draw()
-        below = h - 200 - self.lines.content_height
-        self.best.position = (w / 2, below - 30)
+        below = h - 240 - self.lines.content_height
+        self.best.position = (w / 2, below - 35)
         self.best.draw()
-        self.next_text.position = (w / 2, below - 80)
+        self.next_text.position = (w / 2, below - 100)
         self.next_text.draw()
         if self.round.skipped:
-            self.skipped.position = (w / 2, below - 115)
+            self.skipped.position = (w / 2, below - 135)
             self.skipped.draw()

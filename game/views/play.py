@@ -84,7 +84,8 @@ class PlayView(arcade.View):
         and a penalty stroke is added (no free retakes)."""
         if self.session.restart():
             self.aiming = False
-            self.show_banner(f"{self.turn_prefix()}back to the tee: +1 penalty stroke", 2.5)
+            who = self.turn_prefix()
+            self.show_banner(f"{who}{'b' if who else 'B'}ack to the tee: +1 penalty stroke", 2.5)
 
     def reload_hole(self) -> None:
         """The hole's file changed (`--watch`): build it again, the ball where it was if it still fits."""

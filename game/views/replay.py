@@ -120,7 +120,7 @@ class ReplayView(arcade.View):
                     if not player.state.finished:
                         self.ball_arts[seat].draw(player.body.x, player.body.y, player.body.angle)
             self.window.default_camera.use()
-            scores = "   ".join(f"{name} {strokes_text(p.state.score)}"
+            scores = " · ".join(f"{name}: {strokes_text(p.state.score)}"
                                 for name, p in zip(session.players, hole.players))
             self.hud.text = (f"{self.title} · hole {session.round.number}: {hole.hole.spec.name} · {scores}"
                              + ("   (x4)" if self.fast else ""))

@@ -49,12 +49,16 @@ class ResultsView(UIView):
         self.summary = arcade.Text(self.summary_line(), 0, 0, theme.rgba("text"), 20, anchor_x="center",
                                    anchor_y="center", bold=True)
         best = game.best_course()
-        self.best = arcade.Text(f"Course best with the {game.shape_label}: {strokes_text(best.strokes)} by "
+        this_round = best is not None and game.session is not None and game.session.round is round_ \
+            and best.when == game.session.record.recorded_at
+        self.best = arcade.Text(f"{'New course' if this_round else 'Course'} best with the {game.shape_label}: "
+                                f"{strokes_text(best.strokes)} by "
                                 f"{best.player} ({verdict(best.strokes - best.par)})" if best else "", 0, 0,
                                 theme.rgba("text"), 14, anchor_x="center", anchor_y="center", italic=True)
         warnings = game.store.warnings[-1:] if game.store is not None else []
-        self.warning = arcade.Text(" ".join(warnings), 0, 0, theme.rgba("arrow_strong"), 12, anchor_x="center",
-                                   anchor_y="center")
+        self.warning = arcade.Text(" ".join(w.removeprefix("polygolf: ") for w in warnings), 0, 0,
+                                   theme.rgba("arrow_strong"), 12, anchor_x="center", anchor_y="top", multiline=True,
+                                   width=1100, align="center")
         self.cells: list[tuple[arcade.Text, int, int]] = []  # text, column, row
         results = round_.results
         alone = len(round_.players) == 1
@@ -139,6 +143,6 @@ class ResultsView(UIView):
             text.position = (x, top - (row + 0.5) * cell_h)
             text.draw()
         bottom = top - self.rows * cell_h
-        for text, dy in ((self.summary, 35), (self.best, 65), (self.note, 90), (self.warning, 112)):
+        for text, dy in ((self.summary, 35), (self.best, 65), (self.note, 90), (self.warning, 108)):
             text.position = (w / 2, bottom - dy)
             text.draw()

@@ -24,32 +24,32 @@ from polygolf.game.views.results import ResultsView
 from .test_screens import aim, assert_not_blank, click, frame, key, shots_dir, snapshot, window  # noqa: F401
 
 
-def start_sandbox_round(window, players: int) -> Game:
+def start_sandbox_round(win, players: int) -> Game:
     """From the menu, as a newcomer: Course until Sandbox, Players until `players`, Play, the guide."""
     game = Game.load()
-    ScreenFlow(window, game).menu()
+    ScreenFlow(win, game).menu()
     while game.course.id != "sandbox":
-        click(window, "course")
+        click(win, "course")
     while len(game.players) != players:
-        click(window, "players")
-    assert window.current_view.buttons["players"].text == f"Players: {players}"
-    click(window, "play")
-    if isinstance(window.current_view, GuideView):
-        key(window, arcade.key.ENTER)
-    assert isinstance(window.current_view, PlayView)
+        click(win, "players")
+    assert win.current_view.buttons["players"].text == f"Players: {players}"
+    click(win, "play")
+    if isinstance(win.current_view, GuideView):
+        key(win, arcade.key.ENTER)
+    assert isinstance(win.current_view, PlayView)
     return game
 
 
-def play_to(window, stop, shots: list | None = None, shots_dir=None, max_frames: int = 60 * 60 * 3):
+def play_to(win, stop, shots: list | None = None, max_frames: int = 60 * 60 * 3):
     """Play with the scripted golfer through the mouse until `stop(view)`; between holes, go on.
     `shots` collects (hole number, seat) of every shot in order."""
     golfers = {}
     for step in range(max_frames):
-        view = window.current_view
+        view = win.current_view
         if stop(view):
             return view
         if isinstance(view, BetweenView):
-            key(window, arcade.key.ENTER)
+            key(win, arcade.key.ENTER)
             continue
         assert isinstance(view, PlayView), type(view)
         session = view.session
@@ -58,13 +58,13 @@ def play_to(window, stop, shots: list | None = None, shots_dir=None, max_frames:
             golfer = golfers.setdefault(id(world), golfer_for(world.hole))
             origin, arrow = golfer.plan((world.ball.x, world.ball.y))
             seat, strokes = world.turn, world.state.strokes
-            aim(window, view, origin, arrow)
-            frame(window)
+            aim(win, view, origin, arrow)
+            frame(win)
             assert world.players[seat].state.strokes == strokes + 1, "the synthesised drag did not shoot"
             if shots is not None:
                 shots.append((view.round.number, seat))
             continue
-        frame(window, draw=step % 40 == 0)
+        frame(win, draw=step % 40 == 0)
     pytest.fail("never got there")
 
 

@@ -38,7 +38,7 @@ class GuideView(UIView):
         theme = game.theme
         self.background_color = theme.rgba("background")
         self.title = title("How to play", theme, 36)
-        self.body = arcade.Text(GUIDE, 0, 0, theme.rgba("text"), 15, multiline=True, width=760,
+        self.body = arcade.Text(GUIDE, 0, 0, theme.rgba("text"), 15, multiline=True, width=900,
                                 anchor_x="center", anchor_y="top")
         row = UIBoxLayout(vertical=False, space_between=16)
         go = themed_button(theme, "Got it" if game.guide_seen else "Got it: tee off", width=260)

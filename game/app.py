@@ -124,7 +124,6 @@ def run_replay(path: Path) -> None:
 
     record, course = load_for_replay(path)
     game = Game.load()
-    game.record_rounds = False
     game.shape_label, game.shape = record.shape_label, record.shape  # for this replay only, not saved
     game.courses, game.course_index = [course], 0
     session = replay_session(record, course)

@@ -96,7 +96,8 @@ class ScreenFlow:
         def scorecard() -> None:
             self._show(ResultsView(self.game, session.round, self))
 
-        self._show(ReplayView(self.game, session, scorecard, f"Replay of {record.recorded_at[:16].replace('T', ' ')}"))
+        when = record.recorded_at[:16].replace("T", " ")
+        self._show(ReplayView(self.game, session, scorecard, f"Replay of {when} UTC"))
 
     def next_hole(self) -> None:
         round_ = self.game.round

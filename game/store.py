@@ -74,7 +74,10 @@ class Store:
         self.warnings: list[str] = []
 
     def warn(self, message: str) -> None:
+        """One line on stderr, once: the same trouble on every menu click is said only the first time."""
         line = f"polygolf: {message}"
+        if line in self.warnings:
+            return
         self.warnings.append(line)
         if self.echo:
             print(line, file=sys.stderr)

@@ -194,3 +194,30 @@ def test_a_database_broken_between_launches_costs_one_line_and_the_round_is_kept
     assert Store(echo=False).round_count() == 1
     replay, = (data_dir() / "replays").glob("*.json")
     assert load_record(replay).course == "sandbox"
+
+
+def test_a_recorded_round_is_shown_hole_by_hole_then_its_scorecard(window, shots_dir):  # noqa: F811
+    from polygolf.game.cli import main
+    from polygolf.game.replay import replay_session
+
+    assert main(["autoplay", "--course", "sandbox", "--players", "2", "--preset", "fast"]) == 0
+    replay, = (data_dir() / "replays").glob("*.json")
+    record, course = load_for_replay(replay)
+    game = Game.load()
+    session = replay_session(record, course)
+    ScreenFlow(window, game).watch_round(record, session)
+    view = window.current_view
+    assert isinstance(view, ReplayView) and view.title.startswith("Replay of ")
+    holes_seen = set()
+    for step in range(60 * 60 * 3):
+        if isinstance(window.current_view, ResultsView):
+            break
+        if session.hole is not None:
+            holes_seen.add(session.round.number)
+        frame(window)
+        if step == 90:
+            assert_not_blank(snapshot(window, shots_dir, "replay-round"), "replay")
+    results = window.current_view
+    assert isinstance(results, ResultsView) and holes_seen == {1, 2, 3}
+    assert [[r.strokes for r in card] for card in results.round.cards] == \
+        [[h.final[seat].strokes + h.final[seat].penalties for h in record.holes] for seat in (0, 1)]

@@ -1,6 +1,6 @@
 """The screen flow: the one place that decides which screen follows which.
 
-    menu ─▶ (guide, first time) ─▶ play ⇄ pause
+    menu ─▶ (guide, first time) ─▶ play ⇄ pause          menu ⇄ names, guide
               play ─▶ between ─▶ play … ─▶ results ─▶ play again | menu
               play ⇄ replay (L: the last shot again)
     `polygolf replay FILE`: replay ─▶ results ─▶ menu
@@ -20,6 +20,7 @@ from polygolf.game.session import Game, HoleResult, Round, RoundPlay
 from polygolf.game.views.between import BetweenView
 from polygolf.game.views.guide import GuideView
 from polygolf.game.views.menu import MenuView
+from polygolf.game.views.names import NamesView
 from polygolf.game.views.pause import PauseView
 from polygolf.game.views.play import PlayView
 from polygolf.game.views.replay import ReplayView
@@ -54,6 +55,9 @@ class ScreenFlow:
             self.next_hole()
         else:
             self._show(GuideView(self.game, then=self.next_hole))
+
+    def names(self) -> None:
+        self._show(NamesView(self.game, self))
 
     def guide(self) -> None:
         self._show(GuideView(self.game, then=self.menu))

@@ -443,6 +443,11 @@ class Game:
                         for k, name in enumerate(self.players)]
         self.save_settings()
 
+    def set_names(self, names: list[str]) -> None:
+        """The players' names (their count is the number of players)."""
+        self.players = list(names[:MAX_PLAYERS]) or default_names(1)
+        self.save_settings()
+
     def mark_guide_seen(self) -> None:
         if not self.guide_seen:
             self.guide_seen = True

@@ -221,3 +221,29 @@ def test_a_recorded_round_is_shown_hole_by_hole_then_its_scorecard(window, shots
     assert isinstance(results, ResultsView) and holes_seen == {1, 2, 3}
     assert [[r.strokes for r in card] for card in results.round.cards] == \
         [[h.final[seat].strokes + h.final[seat].penalties for h in record.holes] for seat in (0, 1)]
+
+
+def test_players_type_their_names_and_the_game_keeps_them(window, shots_dir):  # noqa: F811
+    from polygolf.game.views.menu import MenuView
+    from polygolf.game.views.names import NamesView
+
+    from .test_screens import send
+
+    game = Game.load()
+    ScreenFlow(window, game).menu()
+    click(window, "players")
+    click(window, "names")
+    names = window.current_view
+    assert isinstance(names, NamesView) and len(names.boxes) == 2
+    for typed in ("Ann", "Ann"):  # a repeated name is told apart
+        for _ in range(len("Player 1")):
+            send(window, "on_text_motion", arcade.key.MOTION_BACKSPACE)
+        send(window, "on_text", typed)
+        names.on_draw()
+        key(window, arcade.key.TAB)
+    assert [box.text for box in names.boxes] == ["Ann", "Ann"]
+    assert_not_blank(snapshot(window, shots_dir, "names"), "names")
+    key(window, arcade.key.ENTER)
+    assert isinstance(window.current_view, MenuView)
+    assert window.current_view.buttons["names"].text == "Names: Ann, Ann 2"
+    assert Game.load().players == ["Ann", "Ann 2"]  # kept for the next launch

@@ -1,4 +1,4 @@
-"""The menu: Play, Environment (themes), Polygon (shapes), Random polygon, Course, Players, Guide, Quit;
+"""The menu: Play, Environment (themes), Polygon (shapes), Random polygon, Course, Players, Names, Guide, Quit;
 the chosen polygon is drawn beside the buttons."""
 
 from __future__ import annotations
@@ -40,6 +40,7 @@ class MenuView(UIView):
             ("random", "Random polygon", self.on_random),
             ("course", f"Course: {game.course.name}" if game.course else "No course could be read", self.on_course),
             ("players", f"Players: {len(game.players)}", self.on_players),
+            ("names", "Names: " + ", ".join(game.players), self.on_names),
             ("guide", "How to play", self.on_guide),
             ("quit", "Quit", self.on_quit),
         ):
@@ -82,6 +83,9 @@ class MenuView(UIView):
         """1 to 4 players taking turns on one machine."""
         self.game.next_player_count()
         self.build()
+
+    def on_names(self, _event=None) -> None:
+        self.flow.names()
 
     def on_guide(self, _event=None) -> None:
         self.flow.guide()

@@ -17,6 +17,9 @@ class Navigator(Protocol):
     def new_round(self) -> None:
         """A round of the chosen course from its first hole (the guide first, if never seen)."""
 
+    def names(self) -> None:
+        """The players' names, then back to the menu."""
+
     def guide(self) -> None:
         """How to play, then back to the menu."""
 

@@ -73,6 +73,7 @@ def test_two_players_play_to_the_scorecard_and_see_their_bests_next_round(window
     play = window.current_view
     assert [p.body.asleep for p in play.world.players] == [True, True]
     assert play.hud_texts["strokes"].text == "Player 1: 0 strokes"
+    assert play.hud_texts["players"].text == "Player 1 0  ·  Player 2 0"
     assert_not_blank(snapshot(window, shots_dir, "play-two-players"), "play")
     shots: list[tuple[int, int]] = []
     between = play_to(window, lambda v: isinstance(v, BetweenView), shots)

@@ -39,6 +39,7 @@ class PlayView(arcade.View):
             "course": arcade.Text("", 16, 0, theme.rgba("text"), 15, anchor_y="center", bold=True),
             "hole": arcade.Text("", 0, 0, theme.rgba("text"), 15, anchor_x="center", anchor_y="center"),
             "strokes": arcade.Text("", 0, 0, theme.rgba("text"), 15, anchor_x="right", anchor_y="center"),
+            "players": arcade.Text("", 0, 0, theme.rgba("text"), 13, anchor_x="right", anchor_y="center"),
         }
         self.banner = arcade.Text("", 0, 0, theme.rgba("text"), 13, anchor_x="center", anchor_y="center",
                                   multiline=True, width=900, align="center")
@@ -111,6 +112,7 @@ class PlayView(arcade.View):
         self.hud_texts["course"].position = (16, top)
         self.hud_texts["hole"].position = (self.window.width / 2, top)
         self.hud_texts["strokes"].position = (self.window.width - 16, top)
+        self.hud_texts["players"].position = (self.window.width - 16, self.window.height - HUD_HEIGHT - 14)
         self.banner.position = (self.window.width / 2, self.window.height - HUD_HEIGHT - 40)
 
     def on_resize(self, width: int, height: int) -> None:
@@ -128,6 +130,15 @@ class PlayView(arcade.View):
                                        f"  ·  Par {spec.par}")
         extra = f" {penalty_text(state.penalties)}" if state.penalties else ""
         self.hud_texts["strokes"].text = f"{self.turn_prefix()}{strokes_text(state.score)}{extra}"
+        self.hud_texts["players"].text = self.scoreboard()
+
+    def scoreboard(self) -> str:
+        """Everyone's strokes on this hole, under the HUD when several play: 'Ann 2 · Bob 3 (in)'."""
+        if self.world is None or len(self.world.players) < 2:
+            return ""
+        return "  ·  ".join(f"{name} {p.state.score}{' (in)' if p.state.holed else ''}"
+                            f"{' (picked up)' if p.state.picked_up else ''}"
+                            for name, p in zip(self.session.players, self.world.players))
 
     def turn_prefix(self) -> str:
         """'Ann: ' when several play (whose turn the HUD is about), '' alone."""

@@ -10,9 +10,9 @@ from __future__ import annotations
 import hashlib
 import json
 from pathlib import Path
-from typing import Literal
+from typing import Annotated, Literal
 
-from pydantic import BaseModel, ConfigDict, ValidationError
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from polygolf.engine.golf.holes import Course, Hole
 from polygolf.engine.loading.scene import ShapeSpec
@@ -20,6 +20,8 @@ from polygolf.engine.loading.scene import ShapeSpec
 FORMAT = "polygolf-replay"
 FORMAT_VERSION = 1
 MAX_REPLAY_BYTES = 16 * 1024 * 1024
+MAX_HOLE_FRAMES = 60 * 60 * 60  # an hour of play on one hole: more is not a round, and would take long to check
+Frame = Annotated[int, Field(ge=0, le=MAX_HOLE_FRAMES)]
 
 
 class ReplayError(ValueError):
@@ -34,12 +36,12 @@ class Input(_Strict):
     """One thing a player did, before frame `frame` of the hole was stepped: a shot (grab point and
     arrow, world metres), a restart (back to the tee, a penalty stroke), or a preset switch."""
 
-    frame: int
+    frame: Frame
     kind: Literal["shot", "restart", "preset"]
-    player: int = 0
+    player: Annotated[int, Field(ge=0, le=3)] = 0
     grab: tuple[float, float] | None = None
     arrow: tuple[float, float] | None = None
-    preset: str | None = None
+    preset: Literal["fast", "balanced", "accurate"] | None = None
 
 
 class BallEnd(_Strict):
@@ -53,11 +55,11 @@ class BallEnd(_Strict):
 
 
 class HoleRecord(_Strict):
-    position: int  # index of the hole in its course
+    position: Annotated[int, Field(ge=0)]  # index of the hole in its course
     hole: str  # the hole's id (file name), to say which hole a mismatch is on
-    preset: str  # at the hole's start
+    preset: Literal["fast", "balanced", "accurate"]  # at the hole's start
     inputs: list[Input] = []
-    frames: int = 0  # frames stepped until every ball was finished
+    frames: Frame = 0  # frames stepped until every ball was finished
     final: list[BallEnd] = []
 
 
@@ -71,9 +73,9 @@ class RoundRecord(_Strict):
     fingerprint: str  # of the content played (see `fingerprint`)
     shape_label: str
     shape: ShapeSpec
-    preset: str
-    players: list[str]
-    start_at: int = 0
+    preset: Literal["fast", "balanced", "accurate"]
+    players: Annotated[list[Annotated[str, Field(min_length=1, max_length=100)]], Field(min_length=1, max_length=4)]
+    start_at: Annotated[int, Field(ge=0)] = 0
     holes: list[HoleRecord] = []
 
     def save(self, folder: Path) -> Path:

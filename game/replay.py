@@ -23,17 +23,15 @@ def load_for_replay(path: Path) -> tuple[RoundRecord, Course]:
         raise ReplayError(f"{path}: course {record.course!r} is not in this game's content")
     if fingerprint(course) != record.fingerprint:
         raise ReplayError(f"{path}: the content of course {record.course!r} changed since the round was recorded")
-    if not 1 <= len(record.players) <= 4:
-        raise ReplayError(f"{path}: players: 1 to 4, not {len(record.players)}")
     if not 0 <= record.start_at < len(course.holes):
         raise ReplayError(f"{path}: start_at: no hole {record.start_at + 1} in {course.name}")
     for hole in record.holes:
-        if any(i.player >= len(record.players) or i.player < 0 for i in hole.inputs):
+        if any(i.player >= len(record.players) for i in hole.inputs):
             raise ReplayError(f"{path}: holes: an input names a player who is not playing")
         if any(i.kind == "shot" and (i.grab is None or i.arrow is None) for i in hole.inputs):
             raise ReplayError(f"{path}: holes: a shot without its grab point or arrow")
-        if any(i.kind == "preset" and i.preset not in ("fast", "balanced", "accurate") for i in hole.inputs):
-            raise ReplayError(f"{path}: holes: an unknown preset")
+        if any(i.kind == "preset" and i.preset is None for i in hole.inputs):
+            raise ReplayError(f"{path}: holes: a preset switch without its preset")
     return record, course
 
 

@@ -196,7 +196,10 @@ def test_a_tampered_replay_fails_verify_and_a_broken_one_is_refused(tmp_path, ca
     tampered.write_text(json.dumps(data))
     assert main(["replay", str(tampered), "--verify"]) == 1
     capsys.readouterr()
-    for text in ("{", json.dumps({"format": "polygolf-replay", "version": 1}), json.dumps([1, 2])):
+    endless = json.loads(path.read_text())
+    endless["holes"][0]["frames"] = 10 ** 12  # would take for ever to check: refused before any work
+    for text in ("{", json.dumps({"format": "polygolf-replay", "version": 1}), json.dumps([1, 2]),
+                 json.dumps(endless)):
         tampered.write_text(text)
         assert main(["replay", str(tampered), "--verify"]) == 2
         err = capsys.readouterr().err.strip().splitlines()

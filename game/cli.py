@@ -208,6 +208,7 @@ def _autoplay(args: argparse.Namespace) -> int:
 
 
 def _scores(args: argparse.Namespace) -> int:
+    from polygolf.game.session import strokes_text
     from polygolf.game.store import Store
 
     store = Store()
@@ -222,7 +223,7 @@ def _scores(args: argparse.Namespace) -> int:
         return 0
     for b in sorted(bests, key=lambda b: (b.course, b.shape, b.position is None, b.position or 0)):
         where = f"{b.course} {f'hole {b.position + 1}' if b.hole is not None else 'course'} ({b.name})"
-        print(f"{where:<44} {b.shape:<14} {b.strokes:>3} strokes, par {b.par:<3} {b.player}, {b.when[:10]}")
+        print(f"{where:<44} {b.shape:<14} {strokes_text(b.strokes):>11}, par {b.par:<3} {b.player}, {b.when[:10]}")
     return 0
 
 

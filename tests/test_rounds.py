@@ -173,6 +173,10 @@ def test_autoplay_saves_the_round_bests_and_a_replay_that_verifies(capsys):
     course = [b for b in bests if b["hole"] is None]
     assert [b["number"] for b in holes] == [1, 2, 3] and len(course) == 1
     assert course[0]["strokes"] == min(s for _, s in cards)
+    assert main(["scores", "--course", "sandbox"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert len(lines) == 4 and lines[-1].startswith("sandbox course (Sandbox)")
+    assert f"{strokes_text(course[0]['strokes'])}, par {course[0]['par']}" in lines[-1]
     assert main(["replay", str(replays[0]), "--verify"]) == 0
     assert "verified: 3 of 3 holes" in capsys.readouterr().out
 

@@ -90,7 +90,8 @@ class ScreenFlow:
         hole = session.hole.hole
         again = RoundPlay(Round(Course(session.round.course.id, session.round.course.name, [hole]),
                                 players=list(session.players)),
-                          self.game.shape, self.game.shape_label, session.hole_preset, feed={0: inputs})
+                          self.game.shape, self.game.shape_label, session.hole_preset,
+                          feed={0: (session.hole_preset, inputs)})
         who = f"{session.players[shot.player]}'s" if len(session.players) > 1 else "Your"
         self._show(ReplayView(self.game, again, lambda: self.resume(play), f"{who} last shot",
                               from_frame=shot.frame, last_frame=shot.frame))

@@ -38,7 +38,7 @@ def load_for_replay(path: Path) -> tuple[RoundRecord, Course]:
 def replay_session(record: RoundRecord, course: Course) -> RoundPlay:
     """A session that plays the recorded inputs, hole by hole, at their frames."""
     round_ = Round(course, players=list(record.players), position=record.start_at)
-    feed = {hole.position: list(hole.inputs) for hole in record.holes}
+    feed = {hole.position: (hole.preset, list(hole.inputs)) for hole in record.holes}
     return RoundPlay(round_, record.shape, record.shape_label, record.preset, feed=feed)
 
 

@@ -150,11 +150,11 @@ class RoundPlay:
     """
 
     def __init__(self, round_: Round, shape: ShapeSpec, shape_label: str, preset: str = "balanced",
-                 feed: dict[int, list[Input]] | None = None) -> None:
+                 feed: dict[int, tuple[str, list[Input]]] | None = None) -> None:
         self.round = round_
         self.shape = shape
         self.preset = preset
-        self.feed = feed  # position -> the inputs to play on that hole (a replay); None: live input
+        self.feed = feed  # position -> (preset at its start, inputs) to play on that hole (a replay); None: live
         self.hole: HolePlay | None = None
         self.frame = 0  # frames stepped on this hole
         self.waiting: tuple[int, int] | None = None  # (player, strokes before) of a shot not yet settled
@@ -210,10 +210,13 @@ class RoundPlay:
         hole = self.round.current()
         if hole is None:
             return None
+        self._pending = []
+        if self.feed is not None:
+            self.preset, pending = self.feed.get(self.round.position, (self.preset, []))
+            self._pending = list(pending)
         self.hole = HolePlay(hole, self.shape, self.preset, len(self.players))
         self.frame, self.waiting, self.ended = 0, None, None
         self._inputs = []
-        self._pending = list(self.feed.get(self.round.position, [])) if self.feed is not None else []
         self.hole_preset = self.preset
         return self.hole
 
@@ -234,14 +237,18 @@ class RoundPlay:
         return self._apply(Input(frame=self.frame, kind="restart", player=self.turn))
 
     def set_preset(self, name: str) -> None:
-        """Switch the accuracy preset live (recorded: it changes what the physics does)."""
+        """Switch the accuracy preset live (recorded: it changes what the physics does; after the hole's
+        end it only changes the next holes, whose records say which preset they start with)."""
         self.preset = name
-        if self.hole is not None:
+        if self.hole is not None and self.ended is None:
             self._apply(Input(frame=self.frame, kind="preset", preset=name))
+        elif self.hole is not None:
+            self.hole.set_preset(name)
 
     def _apply(self, action: Input) -> bool:
         hole = self.hole
         if action.kind == "preset":
+            self.preset = action.preset
             hole.set_preset(action.preset)
             done = True
         else:

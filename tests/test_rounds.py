@@ -19,6 +19,7 @@ from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.loading.paths import data_dir
 from polygolf.game.cli import main
 from polygolf.game.record import load_record
+from polygolf.game.replay import verify
 from polygolf.game.session import Game, Round, RoundPlay, par_text, penalty_text, strokes_text
 from polygolf.game.shapes import CATALOGUE
 from polygolf.game.store import Store
@@ -266,3 +267,32 @@ def test_a_locked_database_costs_a_warning(capsys):
         holder.execute("ROLLBACK")
         holder.close()
     assert store.load_settings() == {"volume": 0.5}
+
+
+def test_preset_switches_are_recorded_and_the_round_replays_exactly(courses):
+    course = find_course(courses, "sandbox")
+    session = RoundPlay(Round(course, players=["Ann", "Bob"]), PENTAGON, "Pentagon", "balanced")
+    golfers = {}
+
+    def plan(hole):
+        return golfers.setdefault(hole.hole.id, golfer_for(hole.hole)).plan((hole.ball.x, hole.ball.y))
+
+    assert session.shoot(*plan(session.hole))
+    for _ in range(20):
+        session.step()
+    session.set_preset("fast")  # mid-shot: the rest of the roll is simulated at fast
+    while not session.hole_over:
+        if session.can_shoot:
+            session.shoot(*plan(session.hole))
+        session.step()
+    session.set_preset("accurate")  # after the hole's end: the next holes start with it
+    for _ in range(30):
+        session.step()
+    session.finish_hole()
+    session.start_hole()
+    session.play_out(plan)
+    record = session.record
+    assert [h.preset for h in record.holes] == ["balanced", "accurate", "accurate"]
+    assert [i.preset for i in record.holes[0].inputs if i.kind == "preset"] == ["fast"]
+    lines = verify(record, course)
+    assert len(lines) == 3 and all(same for _, same in lines), lines

@@ -103,7 +103,7 @@ class ReplayView(arcade.View):
             self.show_hole()
 
     def last_input_frame(self) -> int:
-        inputs = (self.session.feed or {}).get(self.session.round.position, [])
+        _, inputs = (self.session.feed or {}).get(self.session.round.position, ("", []))
         return inputs[-1].frame if inputs else 0
 
     # -- drawing ----------------------------------------------------------------------------------

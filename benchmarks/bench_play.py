@@ -46,8 +46,9 @@ def main() -> None:
         golfer = golfer_for(world.hole)
         frames, draws, physics = [], [], []
         for _ in range(args.frames + 10):
-            if world.state.finished:
-                view.restart_hole()
+            if world.state.finished:  # the hole again from the start (R would only add a penalty stroke)
+                view.session.restart_hole()
+                view.start_hole()
                 world = view.world
                 golfer = golfer_for(world.hole)
             if world.ball_at_rest:

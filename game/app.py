@@ -52,15 +52,17 @@ def run_menu() -> None:
     arcade_run()
 
 
-def _game_for(course: str | None, hole: int, theme: str | None, shape, only=None):
+def _game_for(course: str | None, hole: int, theme: str | None, shape, only=None, players: list[str] | None = None):
     """The game set up from command-line choices; refuses an unknown course, theme, shape or hole.
-    `only`: play this course alone (a hole file)."""
+    `only`: play this course alone (a hole file). `players`: their names (default: as saved)."""
     from polygolf.engine.golf.holes import find_course
     from polygolf.game.session import Game
     from polygolf.game.shapes import parse_shape
     from polygolf.game.theme import find_theme
 
     game = Game.load()
+    if players:
+        game.players = list(players)
     if only is not None:
         game.courses, game.course_index = [only], 0
     elif not game.courses:
@@ -76,10 +78,11 @@ def _game_for(course: str | None, hole: int, theme: str | None, shape, only=None
     return game
 
 
-def run_play(course: str, hole: int, theme: str | None, shape: str | None, preset: str) -> None:
+def run_play(course: str, hole: int, theme: str | None, shape: str | None, preset: str,
+             players: list[str] | None = None) -> None:
     from polygolf.game.flow import ScreenFlow
 
-    game = _game_for(course, hole, theme, shape)
+    game = _game_for(course, hole, theme, shape, players=players)
     game.preset = preset
     game.guide_seen = True
     ScreenFlow(make_window(), game).new_round(hole - 1)
@@ -95,6 +98,7 @@ def run_hole_file(path: Path, theme: str | None, shape, preset: str, watch: bool
     game = _game_for(None, 1, theme, shape, Course(id=path.stem, name=path.name, holes=[hole]))
     game.preset = preset
     game.guide_seen = True
+    game.record_rounds = False  # a hole being written: practice, nothing saved
     flow = ScreenFlow(make_window(), game)
     flow.new_round()
     if watch:
@@ -109,6 +113,22 @@ def run_hole_file(path: Path, theme: str | None, shape, preset: str, watch: bool
         finally:
             watcher.close()
         return
+    arcade_run()
+
+
+def run_replay(path: Path) -> None:
+    """Show a recorded round in a window, hole by hole, then its scorecard."""
+    from polygolf.game.flow import ScreenFlow
+    from polygolf.game.replay import load_for_replay, replay_session
+    from polygolf.game.session import Game
+
+    record, course = load_for_replay(path)
+    game = Game.load()
+    game.shape_label, game.shape = record.shape_label, record.shape  # for this replay only, not saved
+    game.courses, game.course_index = [course], 0
+    session = replay_session(record, course)
+    game.round, game.session = session.round, session
+    ScreenFlow(make_window(), game).watch_round(record, session)
     arcade_run()
 
 

@@ -51,6 +51,37 @@ def shape_arg(text: str) -> tuple[str, object]:
         raise argparse.ArgumentTypeError(str(exc)) from None
 
 
+def players_arg(text: str) -> int:
+    from polygolf.game.session import MAX_PLAYERS
+
+    if not text.strip().isdigit() or not 1 <= int(text) <= MAX_PLAYERS:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number of players from 1 to {MAX_PLAYERS}")
+    return int(text)
+
+
+def names_arg(text: str) -> list[str]:
+    from polygolf.game.session import MAX_PLAYERS
+
+    names = [name.strip() for name in text.split(",")]
+    if not 1 <= len(names) <= MAX_PLAYERS or not all(names) or any(len(n) > 20 for n in names):
+        raise argparse.ArgumentTypeError(f"{text!r}: give 1 to {MAX_PLAYERS} names of 1 to 20 characters, "
+                                         "separated by commas")
+    if len(set(names)) != len(names):
+        raise argparse.ArgumentTypeError(f"{text!r}: every player needs a different name")
+    return names
+
+
+def player_names(players: int | None, names: list[str] | None) -> list[str] | None:
+    """The names for `--players N [--names A,B]`; None: neither given (the saved choice)."""
+    from polygolf.game.session import default_names
+
+    if names is not None and players is not None and len(names) != players:
+        raise ValueError(f"--names gives {len(names)} names for --players {players}")
+    if names is not None:
+        return names
+    return default_names(players) if players is not None else None
+
+
 def png_arg(text: str) -> Path:
     if not text.lower().endswith(".png"):
         raise argparse.ArgumentTypeError(f"{text!r} is not a .png file")
@@ -136,7 +167,85 @@ def _play(args: argparse.Namespace) -> int:
     if args.watch:
         print("polygolf: --watch needs a hole file: polygolf play FILE.yaml --watch", file=sys.stderr)
         return EXIT_CONTENT
-    return _window(run_play, args.course, args.hole, args.theme, args.shape, args.preset)
+    return _window(run_play, args.course, args.hole, args.theme, args.shape, args.preset,
+                   player_names(args.players, args.names))
+
+
+def _autoplay(args: argparse.Namespace) -> int:
+    """The scripted golfer plays a whole round headless; saved and recorded like any round."""
+    from polygolf.engine.golf.golfer import golfer_for
+    from polygolf.engine.golf.holes import find_course
+    from polygolf.game.session import Game, par_text, strokes_text
+
+    game = Game.load()
+    if not game.courses:
+        raise ValueError(game.problems[0] if game.problems else "no course could be read")
+    course = find_course(game.courses, args.course)
+    game.courses, game.course_index = [course], 0  # this round's course, not saved as the menu's choice
+    game.players = player_names(args.players, args.names) or ["Golfer"]
+    if args.shape is not None:
+        game.shape_label, game.shape = args.shape
+    game.preset = args.preset
+    game.start_round()
+    session = game.session
+    golfers = {}
+
+    def plan(hole):
+        golfer = golfers.setdefault(hole.hole.id, golfer_for(hole.hole))
+        return golfer.plan((hole.ball.x, hole.ball.y))
+
+    session.play_out(plan)
+    replay = game.save_round(session)
+    round_ = session.round
+    for seat, name in enumerate(round_.players):
+        total, par = round_.total_strokes(seat), round_.total_par(seat)
+        cards = " ".join(str(r.strokes) if r.strokes is not None else "-" for r in round_.cards[seat])
+        print(f"{name}: {strokes_text(total)} ({par_text(total - par)}) on {course.name}: {cards}")
+    if replay is not None:
+        print(f"replay: {replay}")
+    return 0
+
+
+def _scores(args: argparse.Namespace) -> int:
+    from polygolf.game.session import strokes_text
+    from polygolf.game.store import Store
+
+    store = Store()
+    bests = store.bests(args.course)
+    if args.json:
+        print(json.dumps([{"course": b.course, "hole": b.hole, "number": None if b.position is None else b.position + 1,
+                           "name": b.name, "shape": b.shape, "strokes": b.strokes, "par": b.par, "player": b.player,
+                           "when": b.when} for b in bests]))
+        return 0
+    if not bests:
+        print("no rounds saved yet" + (f" on {args.course}" if args.course else ""))
+        return 0
+    for b in sorted(bests, key=lambda b: (b.course, b.shape, b.position is None, b.position or 0)):
+        where = f"{b.course} {f'hole {b.position + 1}' if b.hole is not None else 'course'} ({b.name})"
+        print(f"{where:<44} {b.shape:<14} {strokes_text(b.strokes):>11}, par {b.par:<3} {b.player}, {b.when[:10]}")
+    return 0
+
+
+def _replay(args: argparse.Namespace) -> int:
+    from polygolf.game.record import ReplayError
+    from polygolf.game.replay import load_for_replay, verify
+
+    try:
+        record, course = load_for_replay(args.file)
+    except ReplayError as exc:
+        print(f"polygolf: {exc}", file=sys.stderr)
+        return EXIT_CONTENT
+    if not args.verify:
+        from polygolf.game.app import run_replay
+
+        return _window(run_replay, args.file)
+    lines = verify(record, course)
+    for line, _ in lines:
+        print(line)
+    ok = bool(lines) and all(same for _, same in lines) and len(lines) == len(record.holes)
+    print(f"{args.file}: {'verified' if ok else 'does NOT match'}: {len(lines)} of {len(record.holes)} holes "
+          "simulated again")
+    return 0 if ok else 1
 
 
 def _render(args: argparse.Namespace) -> int:
@@ -224,7 +333,28 @@ def build_parser() -> argparse.ArgumentParser:
     play.add_argument("--theme", default=None, help="grass, sand, night ...")
     play.add_argument("--shape", type=shape_arg, default=None, help="pentagon, star-5-2, 7 (sides), random-SEED ...")
     play.add_argument("--preset", choices=list(PRESETS), default="balanced")
+    play.add_argument("--players", type=players_arg, default=None, help="1 to 4 players taking turns (default: as "
+                                                                          "chosen last in the menu)")
+    play.add_argument("--names", type=names_arg, default=None, help="the players' names: Ann,Bob")
     play.set_defaults(run=_play)
+
+    auto = sub.add_parser("autoplay", help="the built-in golfer plays a round headless; saved and recorded")
+    auto.add_argument("--course", default="meadow", help="course name (default meadow)")
+    auto.add_argument("--players", type=players_arg, default=None, help="1 to 4 golfers taking turns (default 1)")
+    auto.add_argument("--names", type=names_arg, default=None, help="their names: Ann,Bob")
+    auto.add_argument("--preset", choices=list(PRESETS), default="balanced")
+    auto.add_argument("--shape", type=shape_arg, default=None, help="pentagon, star-5-2, random-SEED ...")
+    auto.set_defaults(run=_autoplay)
+
+    scores = sub.add_parser("scores", help="the bests kept: per hole and per course, for each ball shape")
+    scores.add_argument("--course", default=None, help="only this course (its id: meadow, hazards ...)")
+    scores.add_argument("--json", action="store_true", help="one JSON list")
+    scores.set_defaults(run=_scores)
+
+    rep = sub.add_parser("replay", help="show a recorded round; --verify simulates it again headless")
+    rep.add_argument("file", type=Path, help="a replay file (replays/*.json in the data folder)")
+    rep.add_argument("--verify", action="store_true", help="exit 0 only if every hole ends bit for bit as recorded")
+    rep.set_defaults(run=_replay)
 
     render = sub.add_parser("render", help="draw a hole to a PNG without a window")
     render.add_argument("course")

@@ -159,3 +159,27 @@ def fit_camera(camera: arcade.Camera2D, bounds: tuple[float, float, float, float
     camera.zoom = zoom
     # Centre the hole in the area under the HUD.
     camera.position = ((x0 + x1) / 2, (y0 + y1) / 2 + hud / 2 / zoom)
+
+
+PLAYER_COLOURS = (None, (79, 195, 247, 255), (239, 83, 80, 255), (186, 104, 200, 255))  # seat 1: the theme's
+
+
+class PlayerBallArt(BallArt):
+    """A player's ball: seat 1 in the theme's ball colour, the others in their own colour, so everyone
+    on the green can tell whose ball is whose."""
+
+    def __init__(self, outline: Sequence[polygon.Vec], theme: Theme, seat: int) -> None:
+        super().__init__(outline, theme)
+        self.colour = PLAYER_COLOURS[seat % len(PLAYER_COLOURS)] or theme.rgba("ball")
+        if seat % len(PLAYER_COLOURS):
+            local = list(outline)
+            self.shapes = ShapeElementList()
+            _filled(self.shapes, local, self.colour, theme.rgba("ball_edge"), 0.05)
+            x, y = local[0]
+            dot = 0.14 * polygon.bounding_radius(local)
+            self.shapes.append(create_ellipse_filled(0.62 * x, 0.62 * y, dot, dot, theme.rgba("ball_edge")))
+
+
+def draw_turn_ring(x: float, y: float, radius: float, colour) -> None:
+    """A ring around the ball whose turn it is."""
+    arcade.draw_circle_outline(x, y, radius * 1.45, colour, 0.07, num_segments=40)

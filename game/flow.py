@@ -1,7 +1,11 @@
 """The screen flow: the one place that decides which screen follows which.
 
-    menu ─▶ (guide, first time) ─▶ play ⇄ pause
+    menu ─▶ (guide, first time) ─▶ play ⇄ pause          menu ⇄ names, guide
               play ─▶ between ─▶ play … ─▶ results ─▶ play again | menu
+              play ⇄ replay (L: the last shot again)
+    `polygolf replay FILE`: replay ─▶ results ─▶ menu
+
+A finished round is saved (database and replay file) here, when the last hole is done.
 
 Screens get this object and ask it to move on (`views.navigation.Navigator`); none imports another.
 """
@@ -10,12 +14,16 @@ from __future__ import annotations
 
 import arcade
 
-from polygolf.game.session import Game, HoleResult
+from polygolf.engine.golf.holes import Course
+from polygolf.game.record import RoundRecord
+from polygolf.game.session import Game, HoleResult, Round, RoundPlay
 from polygolf.game.views.between import BetweenView
 from polygolf.game.views.guide import GuideView
 from polygolf.game.views.menu import MenuView
+from polygolf.game.views.names import NamesView
 from polygolf.game.views.pause import PauseView
 from polygolf.game.views.play import PlayView
+from polygolf.game.views.replay import ReplayView
 from polygolf.game.views.results import ResultsView
 
 
@@ -36,6 +44,7 @@ class ScreenFlow:
 
     def menu(self) -> None:
         self._leave_hole()
+        self.game.close_session()
         self.game.round = None
         self._show(MenuView(self.game, self))
 
@@ -47,6 +56,9 @@ class ScreenFlow:
         else:
             self._show(GuideView(self.game, then=self.next_hole))
 
+    def names(self) -> None:
+        self._show(NamesView(self.game, self))
+
     def guide(self) -> None:
         self._show(GuideView(self.game, then=self.menu))
 
@@ -56,13 +68,41 @@ class ScreenFlow:
     def resume(self, play: arcade.View) -> None:
         self._show(play)
 
-    def hole_done(self, result: HoleResult) -> None:
+    def hole_done(self, results: list[HoleResult]) -> None:
         self.playing = None
         round_ = self.game.round
+        if round_ is not None and round_.over and self.game.session is not None and self.game.record_rounds:
+            self.game.save_round(self.game.session)
         if round_ is None or round_.over:
             self._show(ResultsView(self.game, round_, self))
         else:
-            self._show(BetweenView(self.game, round_, result, self))
+            self._show(BetweenView(self.game, round_, results, self))
+
+    def watch_last_shot(self, play: PlayView) -> None:
+        """The hole being played simulated again from its start, unseen up to its last shot, which is
+        shown; then back to the hole as it was."""
+        session = play.session
+        shot = session.last_shot()
+        if shot is None or session.hole is None:
+            return
+        inputs = session.inputs
+        inputs = inputs[:inputs.index(shot) + 1]
+        hole = session.hole.hole
+        again = RoundPlay(Round(Course(session.round.course.id, session.round.course.name, [hole]),
+                                players=list(session.players)),
+                          self.game.shape, self.game.shape_label, session.hole_preset,
+                          feed={0: (session.hole_preset, inputs)})
+        who = f"{session.players[shot.player]}'s" if len(session.players) > 1 else "Your"
+        self._show(ReplayView(self.game, again, lambda: self.resume(play), f"{who} last shot",
+                              from_frame=shot.frame, last_frame=shot.frame))
+
+    def watch_round(self, record: RoundRecord, session: RoundPlay) -> None:
+        """A recorded round shown hole by hole, then its scorecard."""
+        def scorecard() -> None:
+            self._show(ResultsView(self.game, session.round, self))
+
+        when = record.recorded_at[:16].replace("T", " ")
+        self._show(ReplayView(self.game, session, scorecard, f"Replay of {when} UTC"))
 
     def next_hole(self) -> None:
         round_ = self.game.round

@@ -2,12 +2,20 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from datetime import datetime, timezone
+from pathlib import Path
 
+from polygolf import __version__
 from polygolf.engine.golf.holes import Course, Hole, load_all_courses
+from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.loading.yamlsource import ContentError
+from polygolf.engine.physics.polygon import Vec
+from polygolf.game.record import BallEnd, HoleRecord, Input, RoundRecord, fingerprint
 from polygolf.game.shapes import CATALOGUE
+from polygolf.game.store import Best, Store
 from polygolf.game.theme import Theme, load_themes
 
 _NAMES = {-4: "Condor", -3: "Albatross", -2: "Eagle", -1: "Birdie", 0: "Par", 1: "Bogey",
@@ -29,16 +37,39 @@ class HoleResult:
     par: int
     strokes: int | None  # None: the hole was skipped (broken content)
     picked_up: bool = False
+    penalties: int = 0  # of the strokes, those added by water and restarts
+
+
+def strokes_text(n: int) -> str:
+    return f"{n} stroke{'' if n == 1 else 's'}"
+
+
+def penalty_text(n: int) -> str:
+    """'(+1 penalty stroke)', '(+2 penalty strokes)', or '' for none."""
+    return f"(+{n} penalty stroke{'' if n == 1 else 's'})" if n else ""
+
+
+def par_text(diff: int) -> str:
+    """A score against par as golfers write it: E for level, else signed."""
+    return "E" if diff == 0 else f"{diff:+d}"
 
 
 @dataclass
 class Round:
-    """One course played through. Broken holes are skipped with their error kept for display."""
+    """One course played through by one to four players, a scorecard each. Broken holes are skipped
+    with their error kept for display."""
 
     course: Course
-    results: list[HoleResult] = field(default_factory=list)
+    players: list[str] = field(default_factory=lambda: ["Player 1"])
+    cards: list[list[HoleResult]] = field(default_factory=list)  # one per player, in seat order
     position: int = 0  # index into course.holes of the hole being played
     skipped: list[str] = field(default_factory=list)  # messages for holes that could not be played
+    start_at: int = 0
+
+    def __post_init__(self) -> None:
+        if not self.cards:
+            self.cards = [[] for _ in self.players]
+        self.start_at = self.position
 
     def current(self) -> Hole | None:
         """The hole to play now, skipping (and recording) any broken ones; None when the round is over."""
@@ -46,7 +77,8 @@ class Round:
         while self.position < len(holes) and isinstance(holes[self.position], ContentError):
             error = holes[self.position]
             self.skipped.append(f"Hole {self.position + 1} skipped: {error}")
-            self.results.append(HoleResult(self.position + 1, "(broken)", 0, None))
+            for card in self.cards:
+                card.append(HoleResult(self.position + 1, "(broken)", 0, None))
             self.position += 1
         return holes[self.position] if self.position < len(holes) else None
 
@@ -58,34 +90,266 @@ class Round:
     def hole_count(self) -> int:
         return len(self.course.holes)
 
-    def finish_hole(self, strokes: int, picked_up: bool) -> HoleResult:
+    def finish_hole(self, scores: list[tuple[int, bool, int]]) -> list[HoleResult]:
+        """Every player's (strokes, picked up, penalties) on the hole being played, in seat order."""
         hole = self.current()
         assert hole is not None, "no hole is being played"
-        result = HoleResult(self.number, hole.spec.name, hole.spec.par, strokes, picked_up)
-        self.results.append(result)
+        assert len(scores) == len(self.players), "one score per player"
+        results = [HoleResult(self.number, hole.spec.name, hole.spec.par, strokes, picked_up, penalties)
+                   for strokes, picked_up, penalties in scores]
+        for card, result in zip(self.cards, results):
+            card.append(result)
         self.position += 1
-        return result
+        return results
 
     @property
     def over(self) -> bool:
         return self.current() is None
 
     @property
-    def played(self) -> list[HoleResult]:
-        return [r for r in self.results if r.strokes is not None]
+    def complete(self) -> bool:
+        """Every hole of the course was played (a round started part-way is not a course score)."""
+        return self.over and self.start_at == 0 and all(r.strokes is not None for r in self.results)
 
     @property
-    def total_par(self) -> int:
-        return sum(r.par for r in self.played)
+    def results(self) -> list[HoleResult]:
+        """The first player's card (a one-player round's only one)."""
+        return self.cards[0]
+
+    def played(self, seat: int = 0) -> list[HoleResult]:
+        return [r for r in self.cards[seat] if r.strokes is not None]
+
+    def total_par(self, seat: int = 0) -> int:
+        return sum(r.par for r in self.played(seat))
+
+    def total_strokes(self, seat: int = 0) -> int:
+        return sum(r.strokes for r in self.played(seat))  # type: ignore[misc]
+
+    def standings(self) -> list[int]:
+        """Seats from the fewest strokes to the most (ties keep seat order)."""
+        return sorted(range(len(self.players)), key=lambda seat: self.total_strokes(seat))
+
+    def winners(self) -> list[str]:
+        """Who has the fewest strokes (several on a tie); nobody in a one-player round."""
+        if len(self.players) < 2:
+            return []
+        best = min(self.total_strokes(seat) for seat in range(len(self.players)))
+        return [name for seat, name in enumerate(self.players) if self.total_strokes(seat) == best]
+
+
+class RoundPlay:
+    """A round being played: the one implementation of its rules, shared by the window (mouse input),
+    `autoplay` (the scripted golfer), watching a shot again and replays (recorded inputs, `feed`).
+
+    It builds each hole's world with a ball per player, keeps turns, takes shots and restarts, steps
+    frames, and records every input at its frame with each hole's end (`record`).
+
+    Turn order is strict rotation: each player plays one stroke in seat order, skipping players whose
+    ball is finished; the next player's turn starts when every ball is at rest. A restart (the ball
+    back on its tee spot) keeps the strokes taken, adds a penalty stroke, and the same player plays on.
+    """
+
+    def __init__(self, round_: Round, shape: ShapeSpec, shape_label: str, preset: str = "balanced",
+                 feed: dict[int, tuple[str, list[Input]]] | None = None) -> None:
+        self.round = round_
+        self.shape = shape
+        self.preset = preset
+        self.feed = feed  # position -> (preset at its start, inputs) to play on that hole (a replay); None: live
+        self.hole: HolePlay | None = None
+        self.frame = 0  # frames stepped on this hole
+        self.waiting: tuple[int, int] | None = None  # (player, strokes before) of a shot not yet settled
+        self.ended: HoleRecord | None = None  # the hole's record, taken when its last ball finished
+        self.record = RoundRecord(
+            game_version=__version__, recorded_at=datetime.now(timezone.utc).strftime("%Y-%m-%dT%H:%M:%S"),
+            course=round_.course.id, course_name=round_.course.name, fingerprint=fingerprint(round_.course),
+            shape_label=shape_label, shape=shape, preset=preset, players=list(round_.players),
+            start_at=round_.position)
+        self._inputs: list[Input] = []
+        self._pending: list[Input] = []
+        self.hole_preset = preset  # the preset the hole being played started with
+        self.start_hole()
+
+    # -- reading ----------------------------------------------------------------------------------
 
     @property
-    def total_strokes(self) -> int:
-        return sum(r.strokes for r in self.played)  # type: ignore[misc]
+    def players(self) -> list[str]:
+        return self.round.players
+
+    @property
+    def turn(self) -> int:
+        return self.hole.turn if self.hole is not None else 0
+
+    @property
+    def player_name(self) -> str:
+        return self.players[self.turn]
+
+    @property
+    def hole_over(self) -> bool:
+        return self.hole is not None and self.hole.finished
+
+    @property
+    def can_shoot(self) -> bool:
+        """The player whose turn it is may shoot: everything is at rest and their ball is in play."""
+        hole = self.hole
+        return (hole is not None and self.feed is None and self.waiting is None and not hole.state.finished
+                and hole.all_at_rest)
+
+    @property
+    def inputs(self) -> list[Input]:
+        """This hole's inputs so far."""
+        return list(self._inputs)
+
+    def last_shot(self) -> Input | None:
+        return next((i for i in reversed(self._inputs) if i.kind == "shot"), None)
+
+    # -- the hole ---------------------------------------------------------------------------------
+
+    def start_hole(self) -> HolePlay | None:
+        """The round's current hole with every ball on the tee (None when the round is over)."""
+        self.close()
+        hole = self.round.current()
+        if hole is None:
+            return None
+        self._pending = []
+        if self.feed is not None:
+            self.preset, pending = self.feed.get(self.round.position, (self.preset, []))
+            self._pending = list(pending)
+        self.hole = HolePlay(hole, self.shape, self.preset, len(self.players))
+        self.frame, self.waiting, self.ended = 0, None, None
+        self._inputs = []
+        self.hole_preset = self.preset
+        return self.hole
+
+    def restart_hole(self) -> None:
+        """Build the hole again from the start: only where nothing is scored (a hole file being edited)."""
+        self.start_hole()
+
+    def shoot(self, grab: tuple[float, float], arrow: tuple[float, float]) -> bool:
+        """The player whose turn it is shoots; False if it is not a shot (too short, or not allowed now)."""
+        if not self.can_shoot:
+            return False
+        return self._apply(Input(frame=self.frame, kind="shot", player=self.turn, grab=grab, arrow=arrow))
+
+    def restart(self) -> bool:
+        """The player whose turn it is goes back to the tee: strokes kept, a penalty stroke added."""
+        if self.hole is None or self.feed is not None or self.hole.state.finished:
+            return False
+        return self._apply(Input(frame=self.frame, kind="restart", player=self.turn))
+
+    def set_preset(self, name: str) -> None:
+        """Switch the accuracy preset live (recorded: it changes what the physics does; after the hole's
+        end it only changes the next holes, whose records say which preset they start with)."""
+        self.preset = name
+        if self.hole is not None and self.ended is None:
+            self._apply(Input(frame=self.frame, kind="preset", preset=name))
+        elif self.hole is not None:
+            self.hole.set_preset(name)
+
+    def _apply(self, action: Input) -> bool:
+        hole = self.hole
+        if action.kind == "preset":
+            self.preset = action.preset
+            hole.set_preset(action.preset)
+            done = True
+        else:
+            hole.turn = action.player
+            if action.kind == "shot":
+                strokes = hole.state.strokes
+                done = hole.shoot(action.grab, action.arrow)
+                if done:
+                    self.waiting = (action.player, strokes)
+            else:
+                done = hole.restart_ball()
+                self.waiting = None  # stroke and distance: the same player plays again from the tee
+        if done:
+            self._inputs.append(action)
+        return done
+
+    def step(self, frames: int = 1, profile: bool = False) -> None:
+        """Advance the hole `frames` frames (a replay's inputs go in at their frames); once every ball
+        is finished the hole's end is recorded, and further frames only animate."""
+        hole = self.hole
+        if hole is None:
+            return
+        for _ in range(frames):
+            while self._pending and self._pending[0].frame <= self.frame and self.ended is None:
+                self._apply(self._pending.pop(0))
+            hole.step(profile=profile)
+            if self.ended is not None:
+                continue
+            self.frame += 1
+            self._next_turn()
+            if hole.finished:
+                self.ended = self._hole_record()
+
+    def _next_turn(self) -> None:
+        """Strict rotation: when everything rests after a shot, the next seat whose ball is in play."""
+        hole = self.hole
+        if not hole.all_at_rest or hole.finished:
+            return
+        if self.waiting is not None:
+            player, strokes = self.waiting
+            if hole.players[player].state.strokes == strokes and not hole.players[player].state.finished:
+                self.waiting = None  # not taken (not at rest): the same player again
+                return
+            self.waiting = None
+        elif not hole.state.finished:
+            return
+        seats = len(hole.players)
+        for k in range(1, seats + 1):
+            seat = (hole.turn + k) % seats
+            if not hole.players[seat].state.finished:
+                hole.turn = seat
+                return
+
+    def _hole_record(self) -> HoleRecord:
+        ends = [BallEnd(strokes=p.state.strokes, penalties=p.state.penalties, holed=p.state.holed,
+                        picked_up=p.state.picked_up,
+                        body=(p.body.x, p.body.y, p.body.angle, p.body.vx, p.body.vy, p.body.spin))
+                for p in self.hole.players]
+        return HoleRecord(position=self.round.position, hole=self.hole.hole.id, preset=self.hole_preset,
+                          inputs=self._inputs, frames=self.frame, final=ends)
+
+    def finish_hole(self) -> list[HoleResult]:
+        """Write every player's score on their card, keep the hole's record, and let the world go."""
+        hole = self.hole
+        assert hole is not None and hole.finished, "the hole is not finished"
+        self.record.holes.append(self.ended or self._hole_record())
+        results = self.round.finish_hole([(p.state.score, p.state.picked_up, p.state.penalties)
+                                          for p in hole.players])
+        self.close()
+        return results
+
+    def play_out(self, plan: Callable[[HolePlay], tuple[Vec, Vec]], max_frames: int = 60 * 60 * 10) -> None:
+        """Play the rest of the round with `plan` choosing each shot (the scripted golfer), or with the
+        fed inputs; each hole ends when its balls are finished, or after `max_frames` frames."""
+        while self.hole is not None:
+            while not self.hole.finished and self.frame < max_frames:
+                if self.can_shoot and not self.shoot(*plan(self.hole)):
+                    self.restart()  # the plan cannot move the ball: take the penalty rather than loop
+                self.step()
+            if not self.hole.finished:
+                raise RuntimeError(f"hole {self.round.number} did not finish in {max_frames} frames")
+            self.finish_hole()
+            self.start_hole()
+
+    def close(self) -> None:
+        if self.hole is not None:
+            self.hole.close()
+            self.hole = None
+
+
+MAX_PLAYERS = 4
+
+
+def default_names(count: int) -> list[str]:
+    return [f"Player {k + 1}" for k in range(count)]
 
 
 @dataclass
 class Game:
-    """Everything the screens share: content, the player's choices, and the round in progress."""
+    """Everything the screens share: content, the player's choices, and the round in progress.
+    With a `store`, the choices are read at launch and written back whenever they change."""
 
     courses: list[Course]
     themes: list[Theme]
@@ -96,14 +360,59 @@ class Game:
     preset: str = "balanced"
     round: Round | None = None
     guide_seen: bool = False
+    players: list[str] = field(default_factory=lambda: default_names(1))
+    volume: float = 1.0
     problems: list[str] = field(default_factory=list)  # content that could not be read, for the menu
+    store: Store | None = None
+    session: RoundPlay | None = None
+    record_rounds: bool = True  # False: practice (a hole file being edited): nothing saved
 
     @classmethod
-    def load(cls) -> Game:
-        """The shipped and the player's content; what cannot be read is left out and reported."""
+    def load(cls, store: Store | None = None) -> Game:
+        """The shipped and the player's content (what cannot be read is left out and reported), with
+        the settings saved last time."""
         courses, course_problems = load_all_courses()
         themes, theme_problems = load_themes()
-        return cls(courses=courses, themes=themes, problems=[str(p) for p in course_problems + theme_problems])
+        game = cls(courses=courses, themes=themes, problems=[str(p) for p in course_problems + theme_problems],
+                   store=store if store is not None else Store())
+        game.apply_settings(game.store.load_settings())
+        return game
+
+    # -- settings ---------------------------------------------------------------------------------
+
+    def settings(self) -> dict[str, object]:
+        return {"theme": self.theme.name, "shape": {"label": self.shape_label, "spec": self.shape.model_dump(
+            mode="json", exclude_none=True)}, "course": self.course.id if self.course else None,
+            "players": self.players, "volume": self.volume, "guide_seen": self.guide_seen}
+
+    def apply_settings(self, saved: dict[str, object]) -> None:
+        """Take what was saved; a value that no longer fits (a theme or course gone) is left at its default."""
+        themes = [t.name for t in self.themes]
+        if saved.get("theme") in themes:
+            self.theme_index = themes.index(saved["theme"])
+        courses = [c.id for c in self.courses]
+        if saved.get("course") in courses:
+            self.course_index = courses.index(saved["course"])
+        shape = saved.get("shape")
+        if isinstance(shape, dict) and isinstance(shape.get("label"), str):
+            try:
+                self.set_shape(shape["label"], ShapeSpec.model_validate(shape.get("spec")))
+            except ValueError:
+                pass
+        names = saved.get("players")
+        if isinstance(names, list) and 1 <= len(names) <= MAX_PLAYERS and all(isinstance(n, str) and n.strip()
+                                                                               for n in names):
+            self.players = [n.strip()[:20] for n in names]
+        volume = saved.get("volume")
+        if isinstance(volume, int | float) and 0.0 <= volume <= 1.0:
+            self.volume = float(volume)
+        self.guide_seen = saved.get("guide_seen") is True
+
+    def save_settings(self) -> None:
+        if self.store is not None:
+            self.store.save_settings(self.settings())
+
+    # -- choices ----------------------------------------------------------------------------------
 
     @property
     def theme(self) -> Theme:
@@ -116,19 +425,74 @@ class Game:
 
     def next_theme(self) -> None:
         self.theme_index = (self.theme_index + 1) % len(self.themes)
+        self.save_settings()
 
     def next_course(self) -> None:
         if self.courses:
             self.course_index = (self.course_index + 1) % len(self.courses)
+        self.save_settings()
 
     def next_shape(self) -> None:
         labels = [label for label, _ in CATALOGUE]
         i = labels.index(self.shape_label) + 1 if self.shape_label in labels else 0
         self.shape_label, self.shape = CATALOGUE[i % len(CATALOGUE)]
+        self.save_settings()
 
     def set_shape(self, label: str, shape: ShapeSpec) -> None:
         self.shape_label, self.shape = label, shape
+        self.save_settings()
+
+    def next_player_count(self) -> None:
+        """1, 2, 3, 4, 1 ... players (names kept for the seats that stay)."""
+        count = len(self.players) % MAX_PLAYERS + 1
+        self.players = (self.players + default_names(MAX_PLAYERS))[:count] if count > 1 else self.players[:1]
+        self.players = [name if name not in self.players[:k] else f"Player {k + 1}"
+                        for k, name in enumerate(self.players)]
+        self.save_settings()
+
+    def set_names(self, names: list[str]) -> None:
+        """The players' names (their count is the number of players)."""
+        self.players = list(names[:MAX_PLAYERS]) or default_names(1)
+        self.save_settings()
+
+    def mark_guide_seen(self) -> None:
+        if not self.guide_seen:
+            self.guide_seen = True
+            self.save_settings()
+
+    # -- rounds -----------------------------------------------------------------------------------
 
     def start_round(self, start_at: int = 0) -> Round:
-        self.round = Round(self.course, position=start_at)
+        """A new round of the chosen course for the chosen players, and its session (see RoundPlay)."""
+        self.close_session()
+        self.round = Round(self.course, players=list(self.players), position=start_at)
+        self.session = RoundPlay(self.round, self.shape, self.shape_label, self.preset)
         return self.round
+
+    def close_session(self) -> None:
+        if self.session is not None:
+            self.session.close()
+            self.session = None
+
+    def save_round(self, session: RoundPlay) -> Path | None:
+        """Keep a finished round: its replay file, then its card in the database. Either failing costs
+        a warning, never the round. Returns the replay's path."""
+        if self.store is None:
+            return None
+        replay = None
+        try:
+            replay = session.record.save(self.store.folder / "replays")
+        except OSError as exc:
+            self.store.warn(f"cannot save the replay in {self.store.folder / 'replays'}: {exc.strerror or exc}")
+        self.store.save_round(session.round, session.record, replay)
+        return replay
+
+    def best_hole(self, hole_id: str) -> Best | None:
+        if self.store is None or self.course is None:
+            return None
+        return self.store.best_hole(self.course.id, hole_id, self.shape_label)
+
+    def best_course(self) -> Best | None:
+        if self.store is None or self.course is None:
+            return None
+        return self.store.best_course(self.course.id, self.shape_label)

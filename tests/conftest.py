@@ -15,6 +15,14 @@ PRESET_NAMES = ("fast", "balanced", "accurate")
 
 
 @pytest.fixture(autouse=True)
+def isolated_user_data(tmp_path_factory, monkeypatch) -> Path:
+    """Every test gets its own empty data folder: nothing is read from or written to the real one."""
+    folder = tmp_path_factory.mktemp("data")
+    monkeypatch.setenv("POLYGOLF_DATA", str(folder))
+    return folder
+
+
+@pytest.fixture(autouse=True)
 def isolated_esper_worlds():
     before = set(esper.list_worlds())
     yield

@@ -8,7 +8,7 @@ import esper
 import pytest
 
 from polygolf.engine.assembly.assemble import make_body, make_collider
-from polygolf.engine.components import Ball, Body, Cup, HoleState, Launcher, Material, ShotInput
+from polygolf.engine.components import Ball, Body, Collider, Cup, HoleState, Launcher, Material, ShotInput
 from polygolf.engine.physics import polygon
 from polygolf.engine.physics.settings import MAX_SHOT_SPEED, MAX_SHOT_SPIN, SHOT_POWER, SPIN_RATIO
 from polygolf.engine.physics.shot import shot_velocity
@@ -77,7 +77,7 @@ def test_cup_cap_falls_linearly_from_centre_to_rim(world, distance, speed, drops
     body = Body.dynamic(distance, 0.0, 1.0, 1.0, vx=0.0, vy=speed)
     esper.create_entity(body, Ball(0.0, 0.0))
     esper.process()
-    holed = [value for kind, value in res.events.fired if kind == "holed"]
+    holed = [ball for kind, ball, _ in res.events.fired if kind == "holed"]
     assert bool(holed) is drops
     if drops:
         assert body.asleep and (body.x, body.y) == (0.0, 0.0)
@@ -87,30 +87,34 @@ def test_scoring_counts_strokes_and_holes(world):
     res = ctx()
     esper.add_processor(ScoringProcessor(res))
     state = HoleState(par=3, max_strokes=10)
-    esper.create_entity(state)
+    ball = esper.create_entity(Body.dynamic(0.0, 0.0, 1.0, 1.0), Ball(0.0, 0.0), state)
+    other = HoleState(par=3, max_strokes=10)
+    second = esper.create_entity(Body.dynamic(5.0, 0.0, 1.0, 1.0), Ball(5.0, 0.0), other)
     for _ in range(2):
-        res.events.emit("shot", 1)
-    res.events.emit("penalty", 1)
-    res.events.emit("holed", 1)
-    res.events.emit("shot", 1)  # after the hole is over: not counted
+        res.events.emit("shot", ball)
+    res.events.emit("shot", second)
+    res.events.emit("penalty", ball, 2)
+    res.events.emit("holed", ball)
+    res.events.emit("shot", ball)  # after the hole is over: not counted
     esper.process()
-    assert (state.strokes, state.penalties, state.score, state.holed) == (2, 1, 3, True)
+    assert (state.strokes, state.penalties, state.score, state.holed) == (2, 2, 4, True)
+    assert (other.strokes, other.penalties, other.holed) == (1, 0, False)  # each ball keeps its own score
 
 
 def test_scoring_picks_the_ball_up_after_the_last_stroke(world):
     res = ctx()
     esper.add_processor(ScoringProcessor(res))
     state = HoleState(par=3, max_strokes=2)
-    esper.create_entity(state)
     body = Body.dynamic(0.0, 0.0, 1.0, 1.0, vx=1.0)
-    esper.create_entity(body, Ball(0.0, 0.0))
-    res.events.emit("shot", 1)
-    res.events.emit("shot", 1)
+    ent = esper.create_entity(body, Ball(0.0, 0.0), state, make_collider(SQUARE, Material()))
+    res.events.emit("shot", ent)
+    res.events.emit("shot", ent)
     esper.process()
-    assert not state.picked_up  # still rolling: it might drop
+    assert not state.picked_up and esper.has_component(ent, Collider)  # still rolling: it might drop
     body.asleep = True
     esper.process()
     assert state.picked_up and state.finished and state.score == 2
+    assert not esper.has_component(ent, Collider)  # it left the green: nothing can hit it
 
 
 def test_launcher_sends_the_ball_from_the_tee_again_and_again(world):

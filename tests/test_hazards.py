@@ -101,12 +101,12 @@ def test_slope_pushes_at_its_acceleration(world):
 def test_water_costs_a_stroke_and_returns_the_ball_to_its_last_rest(world):
     ctx = context()
     esper.create_entity(region(((2, -1), (4, -1), (4, 1), (2, 1))), Water())
-    state = HoleState(par=3, max_strokes=10)
-    esper.create_entity(state)
     esper.add_processor(WaterProcessor(ctx), priority=1)
     esper.add_processor(ScoringProcessor(ctx), priority=0)
     body = rolling_ball(vx=0.0, drag=(0.0, 0.0))
-    ball = esper.get_component(Ball)[0][1]
+    (ent, ball), = esper.get_component(Ball)
+    state = HoleState(par=3, max_strokes=10)
+    esper.add_component(ent, state)
     ball.rest_x, ball.rest_y = -1.0, 0.5
     body.x = 2.5  # rolled into the pond
     esper.process()

@@ -70,13 +70,14 @@ class Stats:
 
 @dataclass(slots=True)
 class Events:
-    """Golf events of this substep, in the order they happened: ("shot", entity), ("holed", entity),
-    ("penalty", strokes). The scoring stage, last in the table, reads them and clears the list."""
+    """Golf events of this substep, in the order they happened, each naming the ball it happened to:
+    ("shot", ball, 1), ("holed", ball, 1), ("penalty", ball, strokes). The scoring stage, last in the
+    table, reads them and clears the list; a ball's own `HoleState` keeps its score (one per player)."""
 
-    fired: list[tuple[str, int]] = field(default_factory=list)
+    fired: list[tuple[str, int, int]] = field(default_factory=list)
 
-    def emit(self, kind: str, value: int) -> None:
-        self.fired.append((kind, value))
+    def emit(self, kind: str, ball: int, amount: int = 1) -> None:
+        self.fired.append((kind, ball, amount))
 
 
 @dataclass(slots=True)

@@ -3,6 +3,8 @@ read what to draw. Views talk to this, never to the simulation's insides."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import esper
 
 from polygolf.engine.assembly.assemble import assemble, resolve_knobs
@@ -16,22 +18,68 @@ from polygolf.engine.physics.polygon import Outline
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.shot import clamp_arrow
 
+RESTART_PENALTY = 1  # strokes a restart adds: the strokes already taken stay too
+
+
+@dataclass(frozen=True, slots=True)
+class PlayerBall:
+    """One player's ball in the hole's world: its body, shape, hazard memory, shot input and score."""
+
+    entity: int
+    body: Body
+    collider: Collider
+    marker: Ball
+    shot: ShotInput
+    state: HoleState
+    tee: tuple[float, float]
+
 
 class HolePlay:
-    """One hole being played: its own esper world (see `golf.world.hole_spec`) and the verbs on it."""
+    """One hole being played by one to four players: its own esper world (see `golf.world.hole_spec`)
+    with a ball per player, and the verbs on it. `turn` is whose ball `ball`, `state` and `shoot`
+    mean (the round decides it); `players[k]` reaches any player's ball."""
 
-    def __init__(self, hole: Hole, shape: ShapeSpec, knobs: Knobs | str = "balanced") -> None:
+    def __init__(self, hole: Hole, shape: ShapeSpec, knobs: Knobs | str = "balanced", players: int = 1) -> None:
         self.hole = hole
-        self.sim: Simulation = assemble(hole_spec(hole, shape), knobs)
+        self.sim: Simulation = assemble(hole_spec(hole, shape, players), knobs)
         esper.switch_world(self.sim.world)
-        (ent, (self.ball, self.collider, self._ball, self._shot)), = esper.get_components(Body, Collider, Ball,
-                                                                                         ShotInput)
-        self.ball_entity = ent
-        self.state: HoleState = esper.get_component(HoleState)[0][1]
+        self.players: list[PlayerBall] = [
+            PlayerBall(ent, body, collider, ball, shot, state, (body.x, body.y))
+            for ent, (body, collider, ball, shot, state) in esper.get_components(Body, Collider, Ball, ShotInput,
+                                                                                 HoleState)]
+        self.turn = 0
         self.bumpers: list[Bumper] = [b for _, b in esper.get_component(Bumper)]
         self.windmills: list[Body] = [body for _, (body, _) in esper.get_components(Body, Windmill)]
 
     # -- reading -----------------------------------------------------------------------------------
+
+    @property
+    def ball(self) -> Body:
+        """The ball of the player whose turn it is."""
+        return self.players[self.turn].body
+
+    @property
+    def collider(self) -> Collider:
+        return self.players[self.turn].collider
+
+    @property
+    def state(self) -> HoleState:
+        """The score on this hole of the player whose turn it is."""
+        return self.players[self.turn].state
+
+    @property
+    def ball_entity(self) -> int:
+        return self.players[self.turn].entity
+
+    @property
+    def finished(self) -> bool:
+        """Every ball is in the cup or picked up."""
+        return all(p.state.finished for p in self.players)
+
+    @property
+    def all_at_rest(self) -> bool:
+        """Nothing a player shot is still moving (the next turn waits for this)."""
+        return all(p.body.asleep for p in self.players)
 
     @property
     def layout(self) -> HoleLayout:
@@ -73,14 +121,28 @@ class HolePlay:
         vector = clamp_arrow(arrow)
         if vector is None:
             return False
-        self._shot.request(origin, vector)
+        self.players[self.turn].shot.request(origin, vector)
         return True
 
     def place_ball(self, x: float, y: float) -> None:
-        """Put the ball at rest at (x, y) (where a hazard would put it back too)."""
-        self.ball.x, self.ball.y = x, y
-        self.ball.rest()
-        self._ball.rest_x, self._ball.rest_y = x, y
+        """Put the ball of the player whose turn it is at rest at (x, y) (where a hazard would put it
+        back too)."""
+        player = self.players[self.turn]
+        player.body.x, player.body.y = x, y
+        player.body.rest()
+        player.marker.rest_x, player.marker.rest_y = x, y
+
+    def restart_ball(self) -> bool:
+        """The player whose turn it is starts the hole again: the ball back on its tee spot, the
+        strokes taken kept and a penalty stroke added (counted by the scoring stage, like water's).
+        False if that ball is already finished."""
+        player = self.players[self.turn]
+        if player.state.finished:
+            return False
+        self.place_ball(*player.tee)
+        player.body.angle = 0.0
+        self.sim.res.events.emit("penalty", player.entity, RESTART_PENALTY)
+        return True
 
     def step(self, frames: int = 1, profile: bool = False) -> None:
         self.sim.step(frames, measure=False, profile=profile)

@@ -1,7 +1,10 @@
-"""A hole as a world spec: the ball on the tee, walls, hazards, the cup and the hole's state, and the
-effects the hole brings (the game's rules always; hazards as its content has them)."""
+"""A hole as a world spec: a ball per player on the tee (each with its own shot input and score),
+walls, hazards and the cup, and the effects the hole brings (the game's rules always; hazards as its
+content has them)."""
 
 from __future__ import annotations
+
+import math
 
 from polygolf.engine.assembly.effects import effects_for
 from polygolf.engine.assembly.spec import DynamicPart, KinematicPart, WallPart, WorldSpec
@@ -22,10 +25,13 @@ from polygolf.engine.components import (
     Windmill,
 )
 from polygolf.engine.golf.holes import Hole
-from polygolf.engine.golf.layout import ball_outline
+from polygolf.engine.golf.layout import HoleLayout, ball_fits, ball_outline
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.physics.polygon import bounding_radius
 from polygolf.engine.physics.settings import MAX_SHOT_SPEED
+
+MAX_PLAYERS = 4
+TEE_SPACING = 2.5  # ball radii between the centres of neighbouring balls on the tee
 
 _ZONE_WORDS = {"sand": "bunker", "water": "pond", "ice": "ice sheet", "slope": "slope"}
 _MARKERS = {"sand": Sand, "ice": Ice}
@@ -35,24 +41,51 @@ def _count(n: int, word: str) -> str:
     return f"{n} {word}{'s' if n > 1 else ''}"
 
 
-def hole_spec(hole: Hole, shape: ShapeSpec) -> WorldSpec:
-    """The world of `hole` played with `shape` (scaled to the library's ball radius)."""
+def tee_spots(layout: HoleLayout, radius: float, players: int) -> list[tuple[float, float]]:
+    """Where each player's ball starts: one ball alone on the tee itself; several side by side across
+    the way out of the tee, TEE_SPACING radii apart, each spot moved to the nearest place where a ball
+    fits clear of walls, hazards and the other balls (searched on rings around the tee)."""
+    tee = layout.tee
+    if players == 1:
+        return [tee]
+    ahead = layout.route[1] if len(layout.route) > 1 else (tee[0] + 1.0, tee[1])
+    heading = math.atan2(ahead[1] - tee[1], ahead[0] - tee[0])
+    across = (-math.sin(heading), math.cos(heading))
+    step = TEE_SPACING * radius
+    wanted = [(tee[0] + across[0] * step * (k - (players - 1) / 2), tee[1] + across[1] * step * (k - (players - 1) / 2))
+              for k in range(players)]
+    candidates = [tee] + [(tee[0] + ring * step * 0.5 * math.cos(a * math.pi / 12),
+                           tee[1] + ring * step * 0.5 * math.sin(a * math.pi / 12))
+                          for ring in range(1, 13) for a in range(24)]
+    spots: list[tuple[float, float]] = []
+    for want in wanted:
+        free = [c for c in [want, *candidates] if ball_fits(layout, *c, radius * 1.1)
+                and all(math.dist(c, s) >= step * 0.9 for s in spots)]
+        spots.append(min(free, key=lambda c: math.dist(c, want)) if free else tee)
+    return spots
+
+
+def hole_spec(hole: Hole, shape: ShapeSpec, players: int = 1) -> WorldSpec:
+    """The world of `hole` played with `shape` (scaled to the library's ball radius) by `players`
+    players, each with a ball of their own: they meet each other on the green."""
+    if not 1 <= players <= MAX_PLAYERS:
+        raise ValueError(f"players must be 1 to {MAX_PLAYERS}, not {players}")
     lib, spec, layout = hole.library, hole.spec, hole.layout
     green = spec.green or lib.green
     outline = ball_outline(shape, lib.ball.radius)
-    ball = DynamicPart(
-        name="ball", outline=outline, position=layout.tee, density=lib.ball.density,
+    max_strokes = spec.max_strokes or lib.max_strokes
+    balls = [DynamicPart(
+        name="ball" if players == 1 else f"ball-{k + 1}", outline=outline, position=spot, density=lib.ball.density,
         material=Material(lib.ball.restitution, lib.ball.friction),
         drag=Drag(**green.model_dump()) if green.any else None,
         asleep=spec.launch is None, top_speed=MAX_SHOT_SPEED,
-        extras=(Ball(*layout.tee), ShotInput()),
-    )
+        extras=(Ball(*spot), ShotInput(), HoleState(par=spec.par, max_strokes=max_strokes)),
+    ) for k, spot in enumerate(tee_spots(layout, lib.ball.radius, players))]
     walls = [WallPart(outline, Material()) for outline in layout.borders]
     walls += [WallPart(outline, material) for outline, material in layout.obstacles]
     walls += [WallPart(outline, material, (Bumper(kick),)) for outline, material, kick in layout.bumpers]
     entities: list[tuple[object, ...]] = [
         (Cup(layout.cup[0], layout.cup[1], lib.cup.radius, lib.cup.max_speed),),
-        (HoleState(par=spec.par, max_strokes=spec.max_strokes or lib.max_strokes),),
     ]
     sweeps = tuple((px, py, bounding_radius(local) + lib.ball.radius) for local, (px, py), _ in layout.windmills)
     for kind, zone, push in layout.zones:
@@ -82,8 +115,8 @@ def hole_spec(hole: Hole, shape: ShapeSpec) -> WorldSpec:
     if spec.launch is not None:
         content["launch"] = f"collision test: the ball is launched every {spec.launch.every:g} s"
     rules = {"shot": "the player shoots", "cup": "the ball can drop into the cup",
-             "scoring": f"par {spec.par}, picked up after {spec.max_strokes or lib.max_strokes} strokes"}
-    return WorldSpec(name=f"hole-{hole.id}", bodies=[ball], walls=walls, kinematic=windmills, entities=entities,
+             "scoring": f"par {spec.par}, picked up after {max_strokes} strokes"}
+    return WorldSpec(name=f"hole-{hole.id}", bodies=balls, walls=walls, kinematic=windmills, entities=entities,
                      rules=rules, content_effects=content,
                      listed=tuple(spec.effects) if spec.effects is not None else None, listed_by="the hole",
                      cell_size=lib.tile_size / 2.0)

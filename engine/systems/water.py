@@ -15,12 +15,12 @@ class WaterProcessor(esper.Processor):
 
     def process(self) -> None:
         zones = esper.get_components(Region, Water)
-        for _, (body, ball) in esper.get_components(Body, Ball):
+        for ent, (body, ball) in esper.get_components(Body, Ball):
             if body.asleep:
                 continue
             for _, (region, water) in zones:
                 if region.contains(body.x, body.y):
                     body.x, body.y = water.put_back(ball.rest_x, ball.rest_y)
                     body.rest()
-                    self.events.emit("penalty", water.penalty)
+                    self.events.emit("penalty", ent, water.penalty)
                     break

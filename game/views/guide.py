@@ -23,7 +23,11 @@ capped, so a soft shot never carries a wild spin.
 The cup: the ball drops only if it is slow enough over the cup; fastest over the middle, not at all \
 on the rim. Too fast and it lips out.
 
-Scoring: each hole has a par. After 10 strokes the ball is picked up. R restarts a hole; Esc pauses."""
+Scoring: each hole has a par. After 10 strokes the ball is picked up. R puts your ball back on the tee \
+for a penalty stroke (the strokes taken stay). L shows your last shot again; Esc pauses.
+
+Friends: up to four play on one machine, in turn (one stroke each, in seat order); every ball is on \
+the green and they knock each other about. Fewest strokes wins."""
 
 
 class GuideView(UIView):
@@ -34,7 +38,7 @@ class GuideView(UIView):
         theme = game.theme
         self.background_color = theme.rgba("background")
         self.title = title("How to play", theme, 36)
-        self.body = arcade.Text(GUIDE, 0, 0, theme.rgba("text"), 15, multiline=True, width=760,
+        self.body = arcade.Text(GUIDE, 0, 0, theme.rgba("text"), 15, multiline=True, width=900,
                                 anchor_x="center", anchor_y="top")
         row = UIBoxLayout(vertical=False, space_between=16)
         go = themed_button(theme, "Got it" if game.guide_seen else "Got it: tee off", width=260)
@@ -45,7 +49,7 @@ class GuideView(UIView):
         self.ui.add(anchor)
 
     def on_continue(self, _event=None) -> None:
-        self.game.guide_seen = True
+        self.game.mark_guide_seen()
         self.then()
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:

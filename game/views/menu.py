@@ -1,4 +1,4 @@
-"""The menu: Play, Environment (themes), Polygon (shapes), Random polygon, Course, Guide, Quit;
+"""The menu: Play, Environment (themes), Polygon (shapes), Random polygon, Course, Players, Names, Guide, Quit;
 the chosen polygon is drawn beside the buttons."""
 
 from __future__ import annotations
@@ -39,6 +39,8 @@ class MenuView(UIView):
             ("shape", f"Polygon: {game.shape_label}", self.on_shape),
             ("random", "Random polygon", self.on_random),
             ("course", f"Course: {game.course.name}" if game.course else "No course could be read", self.on_course),
+            ("players", f"Players: {len(game.players)}", self.on_players),
+            ("names", "Names: " + ", ".join(game.players), self.on_names),
             ("guide", "How to play", self.on_guide),
             ("quit", "Quit", self.on_quit),
         ):
@@ -76,6 +78,14 @@ class MenuView(UIView):
     def on_course(self, _event=None) -> None:
         self.game.next_course()
         self.build()
+
+    def on_players(self, _event=None) -> None:
+        """1 to 4 players taking turns on one machine."""
+        self.game.next_player_count()
+        self.build()
+
+    def on_names(self, _event=None) -> None:
+        self.flow.names()
 
     def on_guide(self, _event=None) -> None:
         self.flow.guide()

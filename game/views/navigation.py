@@ -17,6 +17,9 @@ class Navigator(Protocol):
     def new_round(self) -> None:
         """A round of the chosen course from its first hole (the guide first, if never seen)."""
 
+    def names(self) -> None:
+        """The players' names, then back to the menu."""
+
     def guide(self) -> None:
         """How to play, then back to the menu."""
 
@@ -26,8 +29,12 @@ class Navigator(Protocol):
     def resume(self, play: arcade.View) -> None:
         """Back to the hole being played."""
 
-    def hole_done(self, result: HoleResult) -> None:
-        """A hole finished: the between-holes screen, or the scorecard after the last."""
+    def hole_done(self, results: list[HoleResult]) -> None:
+        """A hole finished (every player's result): the between-holes screen, or, after the last, the
+        round is saved and the scorecard shown."""
+
+    def watch_last_shot(self, play: arcade.View) -> None:
+        """The hole simulated again from its start and its last shot shown, then back to `play`."""
 
     def next_hole(self) -> None:
         """On to the round's next hole, or the scorecard if there is none."""

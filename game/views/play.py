@@ -1,8 +1,10 @@
 """The play screen: the hole in the theme's colours, the HUD, and the shot arrow.
 
 Press on the ball and drag: the arrow shows direction and power, where you grabbed the ball sets the
-spin, release shoots, Esc cancels. R restarts the hole; Esc (not aiming) pauses. F3 shows what each
-system costs a frame; 1, 2, 3 switch the preset (fast, balanced, accurate) live.
+spin, release shoots, Esc cancels. R restarts the hole (back to the tee, a penalty stroke); L watches
+the last shot again; Esc (not aiming) pauses. F3 shows what each system costs a frame; 1, 2, 3 switch
+the preset (fast, balanced, accurate) live. The round's rules (turns, scores, recording) are the
+session's (`session.RoundPlay`); this screen turns the mouse into its shots and draws it.
 """
 
 from __future__ import annotations
@@ -13,8 +15,8 @@ import arcade
 
 from polygolf.engine.golf.layout import ball_fits
 from polygolf.engine.golf.play import HolePlay
-from polygolf.game.drawing import HUD_HEIGHT, BallArt, HoleArt, draw_arrow, fit_camera
-from polygolf.game.session import Game, Round
+from polygolf.game.drawing import HUD_HEIGHT, HoleArt, PlayerBallArt, draw_arrow, draw_turn_ring, fit_camera
+from polygolf.game.session import Game, Round, RoundPlay, penalty_text, strokes_text
 from polygolf.game.views.navigation import Navigator
 
 GRAB_SLACK = 1.25  # a press this many ball radii from the centre still grabs the ball
@@ -37,6 +39,7 @@ class PlayView(arcade.View):
             "course": arcade.Text("", 16, 0, theme.rgba("text"), 15, anchor_y="center", bold=True),
             "hole": arcade.Text("", 0, 0, theme.rgba("text"), 15, anchor_x="center", anchor_y="center"),
             "strokes": arcade.Text("", 0, 0, theme.rgba("text"), 15, anchor_x="right", anchor_y="center"),
+            "players": arcade.Text("", 0, 0, theme.rgba("text"), 13, anchor_x="right", anchor_y="center"),
         }
         self.banner = arcade.Text("", 0, 0, theme.rgba("text"), 13, anchor_x="center", anchor_y="center",
                                   multiline=True, width=900, align="center")
@@ -46,18 +49,28 @@ class PlayView(arcade.View):
                               for _ in range(OVERLAY_LINES)]
         self.system_us: dict[str, float] = {}
         self.world: HolePlay | None = None
+        self.session = self.session_for(game, round_)
         self.start_hole()
+
+    @staticmethod
+    def session_for(game: Game, round_: Round) -> RoundPlay:
+        """The game's session of this round (made by `Game.start_round`), or a new one."""
+        if game.session is not None and game.session.round is round_:
+            return game.session
+        game.close_session()
+        game.session = RoundPlay(round_, game.shape, game.shape_label, game.preset)
+        return game.session
 
     # -- hole lifecycle ---------------------------------------------------------------------------
 
     def start_hole(self) -> None:
-        self.close()
-        hole = self.round.current()
-        if hole is None:
+        session = self.session
+        self.world = session.hole if session.hole is not None and not session.hole_over else session.start_hole()
+        if self.world is None:
             return
-        self.world = HolePlay(hole, self.game.shape, self.game.preset)
         self.hole_art = HoleArt(self.world.layout, self.game.theme)
-        self.ball_art = BallArt(self.world.outline, self.game.theme)
+        self.ball_arts = [PlayerBallArt(self.world.outline, self.game.theme, seat)
+                          for seat in range(len(self.world.players))]
         self.aiming = False
         self.grab = self.tip = (0.0, 0.0)
         self.finished_for = 0.0
@@ -68,11 +81,17 @@ class PlayView(arcade.View):
         self.update_hud()
 
     def restart_hole(self) -> None:
-        self.start_hole()
+        """R, or Restart hole: the ball whose turn it is goes back to the tee; the strokes taken stay
+        and a penalty stroke is added (no free retakes)."""
+        if self.session.restart():
+            self.aiming = False
+            who = self.turn_prefix()
+            self.show_banner(f"{who}{'b' if who else 'B'}ack to the tee: +1 penalty stroke", 2.5)
 
     def reload_hole(self) -> None:
         """The hole's file changed (`--watch`): build it again, the ball where it was if it still fits."""
         where = (self.world.ball.x, self.world.ball.y) if self.world is not None else None
+        self.session.restart_hole()
         self.start_hole()
         if self.world is not None and where is not None and ball_fits(self.world.layout, *where,
                                                                       self.world.collider.radius):
@@ -93,6 +112,7 @@ class PlayView(arcade.View):
         self.hud_texts["course"].position = (16, top)
         self.hud_texts["hole"].position = (self.window.width / 2, top)
         self.hud_texts["strokes"].position = (self.window.width - 16, top)
+        self.hud_texts["players"].position = (self.window.width - 16, self.window.height - HUD_HEIGHT - 14)
         self.banner.position = (self.window.width / 2, self.window.height - HUD_HEIGHT - 40)
 
     def on_resize(self, width: int, height: int) -> None:
@@ -108,8 +128,21 @@ class PlayView(arcade.View):
         self.hud_texts["course"].text = self.round.course.name
         self.hud_texts["hole"].text = (f"Hole {self.round.number} of {self.round.hole_count}: {spec.name}"
                                        f"  ·  Par {spec.par}")
-        extra = f" (+{state.penalties} penalty)" if state.penalties else ""
-        self.hud_texts["strokes"].text = f"Strokes {state.score}{extra}"
+        extra = f" {penalty_text(state.penalties)}" if state.penalties else ""
+        self.hud_texts["strokes"].text = f"{self.turn_prefix()}{strokes_text(state.score)}{extra}"
+        self.hud_texts["players"].text = self.scoreboard()
+
+    def scoreboard(self) -> str:
+        """Everyone's strokes on this hole, under the HUD when several play: 'Ann 2 · Bob 3 (in)'."""
+        if self.world is None or len(self.world.players) < 2:
+            return ""
+        return "  ·  ".join(f"{name} {p.state.score}{' (in)' if p.state.holed else ''}"
+                            f"{' (picked up)' if p.state.picked_up else ''}"
+                            for name, p in zip(self.session.players, self.world.players))
+
+    def turn_prefix(self) -> str:
+        """'Ann: ' when several play (whose turn the HUD is about), '' alone."""
+        return f"{self.session.player_name}: " if len(self.session.players) > 1 else ""
 
     # -- input ------------------------------------------------------------------------------------
 
@@ -119,7 +152,7 @@ class PlayView(arcade.View):
 
     def on_mouse_press(self, x: int, y: int, button: int, modifiers: int) -> None:
         world = self.world
-        if world is None or button != arcade.MOUSE_BUTTON_LEFT or world.state.finished or not world.ball_at_rest:
+        if world is None or button != arcade.MOUSE_BUTTON_LEFT or not self.session.can_shoot:
             return
         wx, wy = self.to_world(x, y)
         if math.hypot(wx - world.ball.x, wy - world.ball.y) <= GRAB_SLACK * world.collider.radius:
@@ -135,7 +168,7 @@ class PlayView(arcade.View):
             return
         self.aiming = False
         self.tip = self.to_world(x, y)
-        self.world.shoot(self.grab, (self.tip[0] - self.grab[0], self.tip[1] - self.grab[1]))
+        self.session.shoot(self.grab, (self.tip[0] - self.grab[0], self.tip[1] - self.grab[1]))
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:
         if symbol == arcade.key.ESCAPE:
@@ -145,6 +178,8 @@ class PlayView(arcade.View):
                 self.flow.pause(self)
         elif symbol == arcade.key.R:
             self.restart_hole()
+        elif symbol == arcade.key.L:
+            self.watch_last_shot()
         elif symbol == arcade.key.F3:
             self.overlay = not self.overlay
             self.system_us.clear()
@@ -155,7 +190,7 @@ class PlayView(arcade.View):
         """Switch the accuracy preset live; the next holes keep it."""
         self.game.preset = name
         if self.world is not None:
-            self.world.set_preset(name)
+            self.session.set_preset(name)
         self.system_us.clear()
         self.show_banner(f"Preset: {name}", 2.0)
 
@@ -168,10 +203,10 @@ class PlayView(arcade.View):
         if self.overlay:
             self.step_profiled(world)
         else:
-            world.step()
+            self.session.step()
         self.banner_time = max(0.0, self.banner_time - delta_time)
         self.update_hud()
-        if world.state.finished:
+        if self.session.hole_over:
             self.finished_for += delta_time
             if self.finished_for >= FINISH_PAUSE:
                 self.finish_hole()
@@ -179,7 +214,7 @@ class PlayView(arcade.View):
     def step_profiled(self, world: HolePlay) -> None:
         """One frame with every system timed; keeps running averages in µs per frame."""
         before = world.system_seconds()
-        world.step(profile=True)
+        self.session.step(profile=True)
         for name, total in world.system_seconds().items():
             spent = (total - before.get(name, 0.0)) * 1e6
             old = self.system_us.get(name)
@@ -210,16 +245,19 @@ class PlayView(arcade.View):
             text.draw()
 
     def finish_hole(self) -> None:
-        state = self.world.state
-        result = self.round.finish_hole(state.score, state.picked_up)
-        self.close()
-        self.flow.hole_done(result)
+        results = self.session.finish_hole()
+        self.world = None
+        self.flow.hole_done(results)
+
+    def watch_last_shot(self) -> None:
+        """L: the hole simulated again from its start to the last shot, and that shot shown."""
+        if self.session.last_shot() is not None and not self.aiming:
+            self.flow.watch_last_shot(self)
 
     def close(self) -> None:
         """Let go of the hole's world (leaving the hole, or the game)."""
-        if self.world is not None:
-            self.world.close()
-            self.world = None
+        self.session.close()
+        self.world = None
 
     def on_draw(self) -> None:
         self.clear()
@@ -229,8 +267,7 @@ class PlayView(arcade.View):
         with self.camera.activate():
             self.hole_art.draw([b.lit > 0 for b in world.bumpers], [(w.x, w.y, w.angle) for w in world.windmills],
                                self.game.theme)
-            if not (world.state.holed and self.finished_for > 0.3):
-                self.ball_art.draw(world.ball.x, world.ball.y, world.ball.angle)
+            self.draw_balls(world)
             if self.aiming:
                 draw_arrow(self.grab, self.tip, self.game.theme)
         self.window.default_camera.use()
@@ -242,12 +279,26 @@ class PlayView(arcade.View):
             self.banner.draw()
         if self.overlay:
             self.draw_overlay()
-        if world.state.finished:
+        if self.session.hole_over:
             self.draw_finish_message(w, h)
+
+    def draw_balls(self, world: HolePlay) -> None:
+        """Every ball still in play (a finished one has left the green; the last one drops visibly),
+        with a ring around the ball whose turn it is when several play."""
+        for seat, player in enumerate(world.players):
+            if player.state.finished and not (self.session.hole_over and self.finished_for <= 0.3
+                                              and player.state.holed and seat == world.turn):
+                continue
+            body = player.body
+            self.ball_arts[seat].draw(body.x, body.y, body.angle)
+        if len(world.players) > 1 and self.session.can_shoot:
+            draw_turn_ring(world.ball.x, world.ball.y, world.collider.radius, self.ball_arts[world.turn].colour)
 
     def draw_finish_message(self, w: int, h: int) -> None:
         if self.finish_text is None:
             words = "Picked up" if self.world.state.picked_up else "In the cup!"
+            if len(self.world.players) > 1:
+                words = "Hole over"
             self.finish_text = arcade.Text(words, w / 2, (h - HUD_HEIGHT) / 2, self.game.theme.rgba("text"), 36,
                                            anchor_x="center", anchor_y="center", bold=True)
         self.finish_text.draw()

@@ -1,0 +1,71 @@
+"""Replays: a recorded round (`record.RoundRecord`) played again by the same session code that played
+it (`session.RoundPlay` fed with its inputs), shown in a window or checked headless: `verify` passes
+only if every hole ends with every ball's strokes, flags and body state bit for bit as recorded."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from polygolf.engine.golf.holes import Course, load_all_courses
+from polygolf.game.record import ReplayError, RoundRecord, fingerprint, load_record
+from polygolf.game.session import Round, RoundPlay
+
+SLACK_FRAMES = 60  # a hole may run this much past its recorded end before it is called a mismatch
+
+
+def load_for_replay(path: Path) -> tuple[RoundRecord, Course]:
+    """The record and the course it was played on, as the content is now. A ReplayError (one line) if
+    the file is not a replay, or the course is gone or changed since."""
+    record = load_record(path)
+    courses, _ = load_all_courses()
+    course = next((c for c in courses if c.id == record.course), None)
+    if course is None:
+        raise ReplayError(f"{path}: course {record.course!r} is not in this game's content")
+    if fingerprint(course) != record.fingerprint:
+        raise ReplayError(f"{path}: the content of course {record.course!r} changed since the round was recorded")
+    if not 0 <= record.start_at < len(course.holes):
+        raise ReplayError(f"{path}: start_at: no hole {record.start_at + 1} in {course.name}")
+    for hole in record.holes:
+        if any(i.player >= len(record.players) for i in hole.inputs):
+            raise ReplayError(f"{path}: holes: an input names a player who is not playing")
+        if any(i.kind == "shot" and (i.grab is None or i.arrow is None) for i in hole.inputs):
+            raise ReplayError(f"{path}: holes: a shot without its grab point or arrow")
+        if any(i.kind == "preset" and i.preset is None for i in hole.inputs):
+            raise ReplayError(f"{path}: holes: a preset switch without its preset")
+    return record, course
+
+
+def replay_session(record: RoundRecord, course: Course) -> RoundPlay:
+    """A session that plays the recorded inputs, hole by hole, at their frames."""
+    round_ = Round(course, players=list(record.players), position=record.start_at)
+    feed = {hole.position: (hole.preset, list(hole.inputs)) for hole in record.holes}
+    return RoundPlay(round_, record.shape, record.shape_label, record.preset, feed=feed)
+
+
+def verify(record: RoundRecord, course: Course) -> list[tuple[str, bool]]:
+    """Play the round again headless: (line, matched) for each recorded hole."""
+    session = replay_session(record, course)
+    lines = []
+    try:
+        for recorded in record.holes:
+            hole = session.hole
+            label = f"hole {recorded.position + 1} {recorded.hole}"
+            if hole is None or session.round.position != recorded.position or hole.hole.id != recorded.hole:
+                lines.append((f"{label}: not the hole the round plays next", False))
+                break
+            while session.ended is None and session.frame <= recorded.frames + SLACK_FRAMES:
+                session.step()
+            ended = session.ended
+            if ended is None:
+                lines.append((f"{label}: not finished {SLACK_FRAMES} frames after its recorded end "
+                              f"(frame {recorded.frames})", False))
+                break
+            same = ended.final == recorded.final and ended.frames == recorded.frames
+            scores = ", ".join(str(b.strokes + b.penalties) for b in ended.final)
+            lines.append((f"{label}: {'identical' if same else 'DIFFERENT'} (frame {ended.frames} of "
+                          f"{recorded.frames}; scores {scores})", same))
+            session.finish_hole()
+            session.start_hole()
+    finally:
+        session.close()
+    return lines

@@ -1,0 +1,252 @@
+"""What the game keeps between launches, in SQLite (standard library) in the data folder: every finished
+round with each player's card, the bests (worked out from those cards, so they can never disagree with
+them), and the settings.
+
+Nothing here may stop a round: a locked, unwritable or corrupted database costs one warning line (kept
+in `warnings` for the screens, and printed to stderr) and the game goes on. A file that is not a
+database is set aside as `polygolf.db.corrupt-<timestamp>`, never overwritten, and a fresh one is made.
+
+Schema (version 1):
+
+    meta(key PRIMARY KEY, value)                      schema version
+    settings(key PRIMARY KEY, value)                  JSON values: theme, shape, course, players, volume, guide_seen
+    rounds(id PRIMARY KEY, finished_at, course, course_name, shape, preset, players, complete, fingerprint, replay)
+    cards(round_id, seat, name, strokes, par)         a player's totals for a round
+    holes(round_id, seat, position, hole, name, par, strokes, penalties, picked_up)
+"""
+
+from __future__ import annotations
+
+import json
+import sqlite3
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from polygolf.engine.loading.paths import data_dir
+
+DB_NAME = "polygolf.db"
+SCHEMA_VERSION = 1
+LOCK_TIMEOUT = 0.5  # s to wait for another process's write before giving up on this one
+
+SCHEMA = """
+CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);
+CREATE TABLE IF NOT EXISTS settings (key TEXT PRIMARY KEY, value TEXT NOT NULL);
+CREATE TABLE IF NOT EXISTS rounds (
+    id INTEGER PRIMARY KEY, finished_at TEXT NOT NULL, course TEXT NOT NULL, course_name TEXT NOT NULL,
+    shape TEXT NOT NULL, preset TEXT NOT NULL, players INTEGER NOT NULL, complete INTEGER NOT NULL,
+    fingerprint TEXT NOT NULL, replay TEXT);
+CREATE TABLE IF NOT EXISTS cards (
+    round_id INTEGER NOT NULL REFERENCES rounds(id), seat INTEGER NOT NULL, name TEXT NOT NULL,
+    strokes INTEGER NOT NULL, par INTEGER NOT NULL, PRIMARY KEY (round_id, seat));
+CREATE TABLE IF NOT EXISTS holes (
+    round_id INTEGER NOT NULL REFERENCES rounds(id), seat INTEGER NOT NULL, position INTEGER NOT NULL,
+    hole TEXT NOT NULL, name TEXT NOT NULL, par INTEGER NOT NULL, strokes INTEGER NOT NULL,
+    penalties INTEGER NOT NULL, picked_up INTEGER NOT NULL, PRIMARY KEY (round_id, seat, position));
+CREATE INDEX IF NOT EXISTS holes_best ON holes (hole, strokes);
+"""
+
+
+@dataclass(frozen=True, slots=True)
+class Best:
+    """The fewest strokes on a hole (or a whole course), with that shape, and who played them first."""
+
+    course: str
+    hole: str | None  # None: the whole course
+    position: int | None
+    name: str  # the hole's or course's name
+    shape: str
+    strokes: int
+    par: int
+    player: str
+    when: str
+
+
+class Store:
+    """The database in `folder` (default: the data folder). Every method swallows storage trouble
+    into `warnings` and returns what a fresh, empty store would."""
+
+    def __init__(self, folder: Path | None = None, echo: bool = True) -> None:
+        self.folder = folder if folder is not None else data_dir()
+        self.path = self.folder / DB_NAME
+        self.echo = echo
+        self.warnings: list[str] = []
+
+    def warn(self, message: str) -> None:
+        """One line on stderr, once: the same trouble on every menu click is said only the first time."""
+        line = f"polygolf: {message}"
+        if line in self.warnings:
+            return
+        self.warnings.append(line)
+        if self.echo:
+            print(line, file=sys.stderr)
+
+    # -- connection -------------------------------------------------------------------------------
+
+    def _connect(self) -> sqlite3.Connection:
+        """A connection inside a write transaction (BEGIN IMMEDIATE: a lock is taken now or never)."""
+        self.folder.mkdir(parents=True, exist_ok=True)
+        db = sqlite3.connect(self.path, timeout=LOCK_TIMEOUT, isolation_level=None)
+        try:
+            db.executescript(SCHEMA)
+            db.execute("BEGIN IMMEDIATE")
+            row = db.execute("SELECT value FROM meta WHERE key = 'schema'").fetchone()
+            if row is None:
+                db.execute("INSERT INTO meta VALUES ('schema', ?)", (str(SCHEMA_VERSION),))
+            elif row[0] != str(SCHEMA_VERSION):
+                raise sqlite3.DatabaseError(f"schema version {row[0]}, this game reads {SCHEMA_VERSION}")
+        except BaseException:
+            db.close()
+            raise
+        return db
+
+    def _set_aside(self, why: str) -> None:
+        stamp = time.strftime("%Y%m%d-%H%M%S")
+        target = self.path.with_name(f"{DB_NAME}.corrupt-{stamp}")
+        n = 1
+        while target.exists():
+            n += 1
+            target = self.path.with_name(f"{DB_NAME}.corrupt-{stamp}-{n}")
+        try:
+            self.path.rename(target)
+        except OSError as exc:
+            self.warn(f"{self.path} is damaged ({why}) and cannot be set aside ({exc.strerror}); nothing saved")
+            raise
+        for suffix in ("-journal", "-wal", "-shm"):
+            self.path.with_name(DB_NAME + suffix).unlink(missing_ok=True)
+        self.warn(f"{self.path} was damaged ({why}); kept as {target.name}, starting a fresh one")
+
+    def _transaction(self, work, default, what: str):
+        """Run `work(db)` in one transaction; on trouble warn once and return `default`. A damaged file
+        is set aside and the work tried once more on a fresh one."""
+        for attempt in (1, 2):
+            damage = None
+            try:
+                db = self._connect()
+            except sqlite3.OperationalError as exc:  # locked, unwritable folder or file
+                self.warn(f"cannot {what}: {self.path}: {exc}")
+                return default
+            except sqlite3.DatabaseError as exc:  # not a database, or a damaged one
+                damage = exc
+            except OSError as exc:
+                self.warn(f"cannot {what}: {self.folder}: {exc.strerror or exc}")
+                return default
+            if damage is None:
+                try:
+                    result = work(db)
+                    db.execute("COMMIT")
+                    return result
+                except sqlite3.OperationalError as exc:
+                    self.warn(f"cannot {what}: {self.path}: {exc}")
+                    return default
+                except sqlite3.DatabaseError as exc:
+                    damage = exc
+                finally:
+                    try:
+                        if db.in_transaction:
+                            db.execute("ROLLBACK")
+                    except sqlite3.Error:
+                        pass  # a damaged file may refuse even this; closing drops the transaction
+                    db.close()
+            if attempt == 2:
+                self.warn(f"cannot {what}: {self.path} is damaged ({damage})")
+                return default
+            try:
+                self._set_aside(str(damage))
+            except OSError:
+                return default
+        return default
+
+    # -- settings ---------------------------------------------------------------------------------
+
+    def load_settings(self) -> dict[str, object]:
+        def work(db: sqlite3.Connection) -> dict[str, object]:
+            out = {}
+            for key, value in db.execute("SELECT key, value FROM settings"):
+                try:
+                    out[key] = json.loads(value)
+                except json.JSONDecodeError:
+                    continue  # one unreadable setting falls back to its default
+            return out
+
+        return self._transaction(work, {}, "read the settings")
+
+    def save_settings(self, settings: dict[str, object]) -> bool:
+        def work(db: sqlite3.Connection) -> bool:
+            db.executemany("INSERT OR REPLACE INTO settings VALUES (?, ?)",
+                           [(key, json.dumps(value)) for key, value in settings.items()])
+            return True
+
+        return self._transaction(work, False, "save the settings")
+
+    # -- rounds and bests -------------------------------------------------------------------------
+
+    def save_round(self, round_, record, replay: Path | None) -> int | None:
+        """Keep a finished round (a `session.Round` and its `record.RoundRecord`); its id, or None."""
+        def work(db: sqlite3.Connection) -> int:
+            cursor = db.execute(
+                "INSERT INTO rounds (finished_at, course, course_name, shape, preset, players, complete, "
+                "fingerprint, replay) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                (record.recorded_at, round_.course.id, round_.course.name, record.shape_label, record.preset,
+                 len(round_.players), int(round_.complete), record.fingerprint,
+                 str(replay) if replay is not None else None))
+            round_id = cursor.lastrowid
+            holes = {h.position: h.hole for h in record.holes}
+            for seat, name in enumerate(round_.players):
+                db.execute("INSERT INTO cards VALUES (?, ?, ?, ?, ?)",
+                           (round_id, seat, name, round_.total_strokes(seat), round_.total_par(seat)))
+                db.executemany("INSERT INTO holes VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                               [(round_id, seat, r.number - 1, holes.get(r.number - 1, ""), r.name, r.par,
+                                 r.strokes, r.penalties, int(r.picked_up))
+                                for r in round_.played(seat)])
+            return round_id
+
+        return self._transaction(work, None, "save the round")
+
+    def bests(self, course: str | None = None, shape: str | None = None) -> list[Best]:
+        """Per hole and per whole course: the fewest strokes with each shape, the earliest first on a
+        tie. Course bests count only rounds that played every hole."""
+        def work(db: sqlite3.Connection) -> list[Best]:
+            where, args = [], []
+            if course is not None:
+                where.append("r.course = ?")
+                args.append(course)
+            if shape is not None:
+                where.append("r.shape = ?")
+                args.append(shape)
+            cond = (" AND " + " AND ".join(where)) if where else ""
+            out = []
+            holes = db.execute(
+                "SELECT r.course, h.hole, h.position, h.name, r.shape, h.strokes, h.par, c.name, r.finished_at "
+                "FROM holes h JOIN rounds r ON r.id = h.round_id JOIN cards c ON c.round_id = h.round_id "
+                f"AND c.seat = h.seat WHERE 1 = 1{cond} ORDER BY r.course, h.position, r.shape, h.strokes, "
+                "r.finished_at, h.seat", args).fetchall()
+            seen = set()
+            for row in holes:
+                key = (row[0], row[1], row[4])
+                if key not in seen:
+                    seen.add(key)
+                    out.append(Best(row[0], row[1], row[2], row[3], row[4], row[5], row[6], row[7], row[8]))
+            rounds = db.execute(
+                "SELECT r.course, r.course_name, r.shape, c.strokes, c.par, c.name, r.finished_at FROM cards c "
+                f"JOIN rounds r ON r.id = c.round_id WHERE r.complete = 1{cond} "
+                "ORDER BY r.course, r.shape, c.strokes, r.finished_at, c.seat", args).fetchall()
+            seen = set()
+            for row in rounds:
+                if (row[0], row[2]) not in seen:
+                    seen.add((row[0], row[2]))
+                    out.append(Best(row[0], None, None, row[1], row[2], row[3], row[4], row[5], row[6]))
+            return out
+
+        return self._transaction(work, [], "read the bests")
+
+    def best_hole(self, course: str, hole: str, shape: str) -> Best | None:
+        return next((b for b in self.bests(course, shape) if b.hole == hole), None)
+
+    def best_course(self, course: str, shape: str) -> Best | None:
+        return next((b for b in self.bests(course, shape) if b.hole is None), None)
+
+    def round_count(self) -> int:
+        return self._transaction(lambda db: db.execute("SELECT COUNT(*) FROM rounds").fetchone()[0], 0,
+                                 "count the rounds")

@@ -1,0 +1,298 @@
+"""Rounds without a window: several balls in one hole world, turns, the restart penalty, scorecard
+wording, the database (and a broken one), replays verified and tampered ones refused, and the
+`autoplay`, `scores` and `replay` commands."""
+
+from __future__ import annotations
+
+import json
+import math
+import sqlite3
+
+import esper
+import pytest
+
+from polygolf.engine.components import Collider
+from polygolf.engine.golf.golfer import golfer_for
+from polygolf.engine.golf.holes import find_course, load_all_courses
+from polygolf.engine.golf.layout import ball_fits
+from polygolf.engine.golf.play import HolePlay
+from polygolf.engine.loading.paths import data_dir
+from polygolf.game.cli import main
+from polygolf.game.record import load_record
+from polygolf.game.replay import verify
+from polygolf.game.session import Game, Round, RoundPlay, par_text, penalty_text, strokes_text
+from polygolf.game.shapes import CATALOGUE
+from polygolf.game.store import Store
+from polygolf.game.views.results import hole_cell, running
+
+PENTAGON = CATALOGUE[2][1]
+
+
+@pytest.fixture(scope="module")
+def courses():
+    return load_all_courses()[0]
+
+
+def hole_of(courses, course: str, number: int):
+    return find_course(courses, course).holes[number - 1]
+
+
+def settle(play: HolePlay, limit: int = 60 * 60) -> int:
+    """Step until every ball rests (at least one frame: a requested shot is taken in the next)."""
+    for frame in range(1, limit):
+        play.step()
+        if play.all_at_rest:
+            return frame
+    raise AssertionError("the balls never came to rest")
+
+
+def test_every_player_has_a_ball_on_the_tee_clear_of_the_others(courses):
+    hole = hole_of(courses, "meadow", 1)
+    radius = hole.library.ball.radius
+    for players in (1, 2, 3, 4):
+        play = HolePlay(hole, PENTAGON, players=players)
+        spots = [(p.body.x, p.body.y) for p in play.players]
+        assert len(spots) == players and len({p.entity for p in play.players}) == players
+        if players == 1:
+            assert spots == [hole.layout.tee]  # one player: exactly the tee, as before
+        for i, a in enumerate(spots):
+            assert ball_fits(hole.layout, *a, radius)
+            assert all(math.dist(a, b) >= 2.0 * radius for b in spots[i + 1:])
+        play.close()
+    with pytest.raises(ValueError, match="1 to 4"):
+        HolePlay(hole, PENTAGON, players=5)
+
+
+def test_balls_knock_each_other_and_each_keeps_its_own_score(courses):
+    hole = hole_of(courses, "meadow", 1)
+    play = HolePlay(hole, PENTAGON, players=2)
+    tee, ahead = hole.layout.route[0], hole.layout.route[1]
+    length = math.dist(tee, ahead)
+    ux, uy = (ahead[0] - tee[0]) / length, (ahead[1] - tee[1]) / length
+    play.turn = 1
+    target = (tee[0] + 2.5 * ux, tee[1] + 2.5 * uy)
+    play.place_ball(*target)
+    play.turn = 0
+    play.place_ball(*tee)
+    assert play.shoot(tee, (1.5 * ux, 1.5 * uy))
+    settle(play)
+    second = play.players[1]
+    moved = math.dist((second.body.x, second.body.y), target)
+    assert moved > 0.5, "the struck ball did not knock the other one"
+    assert (play.players[0].state.strokes, second.state.strokes) == (1, 0)
+    play.close()
+
+
+def test_a_holed_ball_leaves_the_green(courses):
+    hole = hole_of(courses, "sandbox", 1)
+    play = HolePlay(hole, PENTAGON, players=2)
+    golfer = golfer_for(hole)
+    for _ in range(60 * 60):
+        if play.state.holed:
+            break
+        if play.all_at_rest:
+            play.shoot(*golfer.plan((play.ball.x, play.ball.y)))
+        play.step()
+    first = play.players[0]
+    assert first.state.holed and not play.finished
+    esper.switch_world(play.sim.world)
+    assert not esper.has_component(first.entity, Collider)  # nothing can hit it in the cup
+    assert esper.has_component(play.players[1].entity, Collider)
+    play.close()
+
+
+def test_turns_rotate_after_everything_rests_and_a_restart_costs_a_stroke(courses):
+    course = find_course(courses, "sandbox")
+    session = RoundPlay(Round(course, players=["Ann", "Bob"]), PENTAGON, "Pentagon")
+    hole = session.hole
+    assert session.player_name == "Ann" and session.can_shoot
+    assert session.shoot((hole.ball.x, hole.ball.y), (1.0, 0.3))
+    session.step()
+    assert not session.can_shoot and session.turn == 0  # still rolling: nobody may shoot
+    # Restarting while the ball rolls: the stroke stays, a penalty stroke is added, Ann plays again.
+    assert session.restart()
+    session.step()
+    ann = hole.players[0]
+    assert (ann.state.strokes, ann.state.penalties, ann.state.score) == (1, 1, 2)
+    assert (ann.body.x, ann.body.y) == ann.tee and session.turn == 0 and session.can_shoot
+    assert session.shoot((hole.ball.x, hole.ball.y), (0.8, 0.0))
+    while not session.can_shoot:
+        session.step()
+    assert session.player_name == "Bob"
+    assert [i.kind for i in session.inputs] == ["shot", "restart", "shot"]
+    session.close()
+
+
+def test_scorecard_wording():
+    assert strokes_text(1) == "1 stroke" and strokes_text(2) == "2 strokes"
+    assert penalty_text(1) == "(+1 penalty stroke)" and penalty_text(3) == "(+3 penalty strokes)"
+    assert penalty_text(0) == "" and par_text(0) == "E" and par_text(-2) == "-2" and par_text(1) == "+1"
+
+
+def test_the_scorecard_shows_each_hole_against_par_and_a_running_total(courses):
+    round_ = Round(find_course(courses, "meadow"))
+    pars = [h.spec.par for h in round_.course.playable]
+    round_.finish_hole([(1, False, 0)])  # a hole in one
+    round_.finish_hole([(pars[1] + 2, False, 1)])
+    card = round_.results
+    assert hole_cell(card[0]) == f"1 ({par_text(1 - pars[0])})" and card[0].strokes - card[0].par == 1 - pars[0]
+    assert running(card) == [par_text(1 - pars[0]), par_text(3 - pars[0])]
+
+
+def test_winners_and_ties(courses):
+    round_ = Round(find_course(courses, "sandbox"), players=["Ann", "Bob", "Cy"])
+    round_.finish_hole([(2, False, 0), (3, False, 0), (2, False, 0)])
+    assert round_.winners() == ["Ann", "Cy"]
+    round_.finish_hole([(3, False, 0), (1, False, 0), (3, False, 0)])
+    assert round_.winners() == ["Bob"] and round_.standings() == [1, 0, 2]  # 4, 5, 5 strokes
+
+
+def autoplay(*args: str) -> int:
+    """`polygolf autoplay` on the short Sandbox course; the exit status, also for argparse's refusals."""
+    try:
+        return main(["autoplay", "--course", "sandbox", "--preset", "fast", *args])
+    except SystemExit as exc:
+        return exc.code
+
+
+def test_autoplay_saves_the_round_bests_and_a_replay_that_verifies(capsys):
+    assert autoplay("--players", "2", "--names", "Ann,Bob") == 0
+    out = capsys.readouterr().out
+    replays = list((data_dir() / "replays").glob("*.json"))
+    assert len(replays) == 1 and f"replay: {replays[0]}" in out
+    record = load_record(replays[0])
+    assert record.players == ["Ann", "Bob"] and len(record.holes) == 3 and record.preset == "fast"
+    assert all(len(h.final) == 2 and h.inputs and h.inputs[0].kind == "shot" for h in record.holes)
+    # The card in the database is the one printed.
+    with sqlite3.connect(data_dir() / "polygolf.db") as db:
+        cards = db.execute("SELECT name, strokes FROM cards ORDER BY seat").fetchall()
+    for name, strokes in cards:
+        assert f"{name}: {strokes_text(strokes)}" in out
+    assert main(["scores", "--json"]) == 0
+    bests = json.loads(capsys.readouterr().out)
+    holes = [b for b in bests if b["hole"] is not None]
+    course = [b for b in bests if b["hole"] is None]
+    assert [b["number"] for b in holes] == [1, 2, 3] and len(course) == 1
+    assert course[0]["strokes"] == min(s for _, s in cards)
+    assert main(["scores", "--course", "sandbox"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert len(lines) == 4 and lines[-1].startswith("sandbox course (Sandbox)")
+    assert f"{strokes_text(course[0]['strokes'])}, par {course[0]['par']}" in lines[-1]
+    assert main(["replay", str(replays[0]), "--verify"]) == 0
+    assert "verified: 3 of 3 holes" in capsys.readouterr().out
+
+
+def test_a_tampered_replay_fails_verify_and_a_broken_one_is_refused(tmp_path, capsys):
+    assert autoplay() == 0
+    path = next((data_dir() / "replays").glob("*.json"))
+    capsys.readouterr()
+    data = json.loads(path.read_text())
+    x, y = data["holes"][1]["inputs"][0]["arrow"]
+    data["holes"][1]["inputs"][0]["arrow"] = [x * 0.97, y * 0.97]  # a slightly weaker first shot on hole 2
+    tampered = tmp_path / "tampered.json"
+    tampered.write_text(json.dumps(data))
+    assert main(["replay", str(tampered), "--verify"]) == 1
+    out = capsys.readouterr().out
+    assert "hole 1 warm-up: identical" in out and ("DIFFERENT" in out or "not finished" in out)
+    assert "does NOT match" in out
+    # Results edited by hand fail too: the simulation decides, not the file.
+    data = json.loads(path.read_text())
+    data["holes"][0]["final"][0]["strokes"] -= 1
+    tampered.write_text(json.dumps(data))
+    assert main(["replay", str(tampered), "--verify"]) == 1
+    capsys.readouterr()
+    endless = json.loads(path.read_text())
+    endless["holes"][0]["frames"] = 10 ** 12  # would take for ever to check: refused before any work
+    for text in ("{", json.dumps({"format": "polygolf-replay", "version": 1}), json.dumps([1, 2]),
+                 json.dumps(endless)):
+        tampered.write_text(text)
+        assert main(["replay", str(tampered), "--verify"]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and str(tampered) in err[0] and "Traceback" not in err[0]
+    assert main(["replay", str(tmp_path / "missing.json")]) == 2
+
+
+@pytest.mark.parametrize("args", [["--players", "5"], ["--players", "two"], ["--players", "0"],
+                                  ["--names", "Ann,Ann"], ["--players", "3", "--names", "Ann,Bob"]])
+def test_bad_player_arguments_are_one_line_and_status_2(args, capsys):
+    assert autoplay(*args) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("polygolf") and "Traceback" not in err[0]
+
+
+def test_settings_are_kept_between_launches(courses):
+    game = Game.load()
+    assert not game.guide_seen and len(game.players) == 1
+    game.next_theme()
+    game.next_shape()
+    game.next_player_count()
+    game.mark_guide_seen()
+    again = Game.load()
+    assert (again.theme.name, again.shape_label, again.players, again.guide_seen) == \
+        (game.theme.name, game.shape_label, ["Player 1", "Player 2"], True)
+
+
+def test_a_corrupted_database_is_set_aside_and_the_round_saved_to_a_fresh_one(capsys):
+    db = data_dir() / "polygolf.db"
+    assert autoplay() == 0
+    assert Store(echo=False).round_count() == 1
+    db.write_bytes(b"\x00garbage, not SQLite\xff" * 200)
+    capsys.readouterr()
+    assert autoplay() == 0
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "damaged" in err[0] and "corrupt-" in err[0]
+    aside = list(data_dir().glob("polygolf.db.corrupt-*"))
+    assert len(aside) == 1 and aside[0].read_bytes().startswith(b"\x00garbage")  # kept, not overwritten
+    assert Store(echo=False).round_count() == 1  # this round, in a fresh database
+
+
+def test_an_unusable_data_folder_costs_a_warning_not_the_round(tmp_path, monkeypatch, capsys):
+    blocked = tmp_path / "file-not-folder"
+    blocked.write_text("in the way")
+    monkeypatch.setenv("POLYGOLF_DATA", str(blocked))
+    assert autoplay() == 0
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err and all(line.startswith("polygolf: cannot") for line in err)
+
+
+def test_a_locked_database_costs_a_warning(capsys):
+    store = Store(echo=False)
+    assert store.save_settings({"volume": 0.5})
+    holder = sqlite3.connect(store.path, isolation_level=None)
+    holder.execute("BEGIN EXCLUSIVE")
+    try:
+        assert store.save_settings({"volume": 0.25}) is False
+        assert len(store.warnings) == 1 and "locked" in store.warnings[0]
+    finally:
+        holder.execute("ROLLBACK")
+        holder.close()
+    assert store.load_settings() == {"volume": 0.5}
+
+
+def test_preset_switches_are_recorded_and_the_round_replays_exactly(courses):
+    course = find_course(courses, "sandbox")
+    session = RoundPlay(Round(course, players=["Ann", "Bob"]), PENTAGON, "Pentagon", "balanced")
+    golfers = {}
+
+    def plan(hole):
+        return golfers.setdefault(hole.hole.id, golfer_for(hole.hole)).plan((hole.ball.x, hole.ball.y))
+
+    assert session.shoot(*plan(session.hole))
+    for _ in range(20):
+        session.step()
+    session.set_preset("fast")  # mid-shot: the rest of the roll is simulated at fast
+    while not session.hole_over:
+        if session.can_shoot:
+            session.shoot(*plan(session.hole))
+        session.step()
+    session.set_preset("accurate")  # after the hole's end: the next holes start with it
+    for _ in range(30):
+        session.step()
+    session.finish_hole()
+    session.start_hole()
+    session.play_out(plan)
+    record = session.record
+    assert [h.preset for h in record.holes] == ["balanced", "accurate", "accurate"]
+    assert [i.preset for i in record.holes[0].inputs if i.kind == "preset"] == ["fast"]
+    lines = verify(record, course)
+    assert len(lines) == 3 and all(same for _, same in lines), lines

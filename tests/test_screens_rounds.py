@@ -1,0 +1,250 @@
+"""Rounds in the real window (Xvfb), driven by synthesised mouse and key events: two players to the
+scorecard and their bests on the next round, the restart penalty, the last shot watched again, and a
+database broken between launches."""
+
+from __future__ import annotations
+
+import arcade
+import pytest
+
+from polygolf.engine.golf.golfer import golfer_for
+from polygolf.engine.loading.paths import data_dir
+from polygolf.game.flow import ScreenFlow
+from polygolf.game.record import load_record
+from polygolf.game.replay import load_for_replay, verify
+from polygolf.game.session import Game
+from polygolf.game.store import Store
+from polygolf.game.views.between import BetweenView
+from polygolf.game.views.guide import GuideView
+from polygolf.game.views.pause import PauseView
+from polygolf.game.views.play import PlayView
+from polygolf.game.views.replay import ReplayView
+from polygolf.game.views.results import ResultsView
+
+from .test_screens import aim, assert_not_blank, click, frame, key, shots_dir, snapshot, window  # noqa: F401
+
+
+def start_sandbox_round(win, players: int) -> Game:
+    """From the menu, as a newcomer: Course until Sandbox, Players until `players`, Play, the guide."""
+    game = Game.load()
+    ScreenFlow(win, game).menu()
+    while game.course.id != "sandbox":
+        click(win, "course")
+    while len(game.players) != players:
+        click(win, "players")
+    assert win.current_view.buttons["players"].text == f"Players: {players}"
+    click(win, "play")
+    if isinstance(win.current_view, GuideView):
+        key(win, arcade.key.ENTER)
+    assert isinstance(win.current_view, PlayView)
+    return game
+
+
+def play_to(win, stop, shots: list | None = None, max_frames: int = 60 * 60 * 3):
+    """Play with the scripted golfer through the mouse until `stop(view)`; between holes, go on.
+    `shots` collects (hole number, seat) of every shot in order."""
+    golfers = {}
+    for step in range(max_frames):
+        view = win.current_view
+        if stop(view):
+            return view
+        if isinstance(view, BetweenView):
+            key(win, arcade.key.ENTER)
+            continue
+        assert isinstance(view, PlayView), type(view)
+        session = view.session
+        if session.can_shoot:
+            world = view.world
+            golfer = golfers.setdefault(id(world), golfer_for(world.hole))
+            origin, arrow = golfer.plan((world.ball.x, world.ball.y))
+            seat, strokes = world.turn, world.state.strokes
+            aim(win, view, origin, arrow)
+            frame(win)
+            assert world.players[seat].state.strokes == strokes + 1, "the synthesised drag did not shoot"
+            if shots is not None:
+                shots.append((view.round.number, seat))
+            continue
+        frame(win, draw=step % 40 == 0)
+    pytest.fail("never got there")
+
+
+def test_two_players_play_to_the_scorecard_and_see_their_bests_next_round(window, shots_dir):  # noqa: F811
+    game = start_sandbox_round(window, 2)
+    play = window.current_view
+    assert [p.body.asleep for p in play.world.players] == [True, True]
+    assert play.hud_texts["strokes"].text == "Player 1: 0 strokes"
+    assert play.hud_texts["players"].text == "Player 1 0  ·  Player 2 0"
+    assert_not_blank(snapshot(window, shots_dir, "play-two-players"), "play")
+    shots: list[tuple[int, int]] = []
+    between = play_to(window, lambda v: isinstance(v, BetweenView), shots)
+    assert_not_blank(snapshot(window, shots_dir, "between-two-players"), "between")
+    assert "Player 1: " in between.lines.text and "Player 2: " in between.lines.text
+    assert between.best.text.startswith("No best kept")  # nothing saved yet: the round is not over
+    # Strict rotation: the seats alternate while both balls are in play.
+    first_hole = [seat for number, seat in shots if number == 1]
+    card = [r.strokes for r in game.round.cards[0]], [r.strokes for r in game.round.cards[1]]
+    both = 2 * min(card[0][0], card[1][0])
+    assert first_hole[:both] == [0, 1] * (both // 2)
+    results = play_to(window, lambda v: isinstance(v, ResultsView), shots)
+    round_ = results.round
+    totals = [round_.total_strokes(0), round_.total_strokes(1)]
+    assert totals == [sum(1 for _, seat in shots if seat == k) + sum(r.penalties for r in round_.cards[k])
+                      for k in (0, 1)]
+    winners = [name for name, total in zip(round_.players, totals) if total == min(totals)]
+    assert (f"{winners[0]} wins" if len(winners) == 1 else "A tie") in results.summary.text
+    player_rows = [text.text for text, col, row in results.cells if col == 0]
+    assert player_rows == ["Hole", "Par", "Player 1", "  to par, running", "Player 2", "  to par, running"]
+    assert_not_blank(snapshot(window, shots_dir, "results-two-players"), "results")
+    # Saved: the round in the database, its replay on disk, and it verifies.
+    assert Store(echo=False).round_count() == 1
+    replay, = (data_dir() / "replays").glob("*.json")
+    record, course = load_for_replay(replay)
+    assert record.players == ["Player 1", "Player 2"] and all(same for _, same in verify(record, course))
+    # The next round shows the bests between holes and on the scorecard.
+    click(window, _button(results, "Play again"))
+    assert isinstance(window.current_view, PlayView)
+    between = play_to(window, lambda v: isinstance(v, BetweenView))
+    best_hole_1 = min(round_.cards[0][0].strokes, round_.cards[1][0].strokes)
+    assert "Best on this hole with the Pentagon: " in between.best.text
+    assert f": {best_hole_1} stroke" in between.best.text
+    assert_not_blank(snapshot(window, shots_dir, "between-with-best"), "between")
+    results = play_to(window, lambda v: isinstance(v, ResultsView))
+    assert results.best.text.startswith(("Course best with the Pentagon: ", "New course best with the Pentagon: "))
+    assert_not_blank(snapshot(window, shots_dir, "results-with-best"), "results")
+
+
+def _button(view, text: str):
+    """A GUI button by its label."""
+    for widget in view.ui.walk_widgets():
+        if getattr(widget, "text", None) == text:
+            return widget
+    raise AssertionError(f"no button {text!r}")
+
+
+def test_restart_keeps_the_strokes_and_adds_a_penalty_stroke(window, shots_dir):  # noqa: F811
+    game = start_sandbox_round(window, 1)
+    play = window.current_view
+    world = play.world
+    tee = (world.ball.x, world.ball.y)
+    aim(window, play, tee, (1.2, 0.4))
+    for _ in range(5):
+        frame(window)
+    assert world.state.strokes == 1 and not world.ball_at_rest
+    key(window, arcade.key.R)  # while it rolls: no free retake
+    frame(window)
+    assert (world.state.strokes, world.state.penalties, world.state.score) == (1, 1, 2)
+    assert (world.ball.x, world.ball.y) == tee and world.ball_at_rest
+    assert play.hud_texts["strokes"].text == "2 strokes (+1 penalty stroke)"
+    assert_not_blank(snapshot(window, shots_dir, "play-restart-penalty"), "play")
+    key(window, arcade.key.ESCAPE)
+    pause = window.current_view
+    assert isinstance(pause, PauseView)
+    click(window, _button(pause, "Restart hole"))
+    frame(window)
+    assert window.current_view is play and (world.state.strokes, world.state.penalties) == (1, 2)
+    assert play.hud_texts["strokes"].text == "3 strokes (+2 penalty strokes)"
+    # The restarts are in the recording, so the hole still replays exactly.
+    assert [i.kind for i in game.session.inputs] == ["shot", "restart", "restart"]
+
+
+def test_l_shows_the_last_shot_again_and_returns_to_the_hole(window, shots_dir):  # noqa: F811
+    start_sandbox_round(window, 2)
+    play = window.current_view
+    world = play.world
+    for _ in range(2):  # a shot each
+        origin, arrow = golfer_for(world.hole).plan((world.ball.x, world.ball.y))
+        aim(window, play, origin, arrow)
+        while not play.session.can_shoot:
+            frame(window)
+    live = [(p.body.x, p.body.y, p.body.angle) for p in world.players]
+    key(window, arcade.key.L)
+    replay = window.current_view
+    assert isinstance(replay, ReplayView) and replay.title == "Player 2's last shot"
+    assert replay.session.frame == play.session.last_shot().frame  # the frames before were simulated unseen
+    for _ in range(20):
+        frame(window)
+    assert_not_blank(snapshot(window, shots_dir, "replay-last-shot"), "replay")
+    for _ in range(60 * 30):
+        if replay.at_end():
+            break
+        frame(window)
+    again = [(p.body.x, p.body.y, p.body.angle) for p in replay.session.hole.players]
+    assert again == live  # simulated again, bit for bit
+    for _ in range(120):
+        if window.current_view is play:
+            break
+        frame(window)
+    assert window.current_view is play
+    assert [(p.body.x, p.body.y, p.body.angle) for p in world.players] == live  # the hole as it was
+    assert play.session.can_shoot and play.session.player_name == "Player 1"
+
+
+def test_a_database_broken_between_launches_costs_one_line_and_the_round_is_kept(window, shots_dir, capsys):  # noqa: F811
+    store = Store(echo=False)
+    store.save_settings({"guide_seen": True})
+    store.path.write_bytes(b"SQLite format 3\x00" + b"\xde\xad\xbe\xef" * 500)  # a header, then garbage
+    capsys.readouterr()
+    start_sandbox_round(window, 1)
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "damaged" in err[0] and "polygolf.db.corrupt-" in err[0]
+    results = play_to(window, lambda v: isinstance(v, ResultsView))
+    assert "damaged" in results.warning.text
+    assert_not_blank(snapshot(window, shots_dir, "results-after-broken-db"), "results")
+    aside, = data_dir().glob("polygolf.db.corrupt-*")
+    assert aside.read_bytes().endswith(b"\xde\xad\xbe\xef")
+    assert Store(echo=False).round_count() == 1
+    replay, = (data_dir() / "replays").glob("*.json")
+    assert load_record(replay).course == "sandbox"
+
+
+def test_a_recorded_round_is_shown_hole_by_hole_then_its_scorecard(window, shots_dir):  # noqa: F811
+    from polygolf.game.cli import main
+    from polygolf.game.replay import replay_session
+
+    assert main(["autoplay", "--course", "sandbox", "--players", "2", "--preset", "fast"]) == 0
+    replay, = (data_dir() / "replays").glob("*.json")
+    record, course = load_for_replay(replay)
+    game = Game.load()
+    session = replay_session(record, course)
+    ScreenFlow(window, game).watch_round(record, session)
+    view = window.current_view
+    assert isinstance(view, ReplayView) and view.title.startswith("Replay of ")
+    holes_seen = set()
+    for step in range(60 * 60 * 3):
+        if isinstance(window.current_view, ResultsView):
+            break
+        if session.hole is not None:
+            holes_seen.add(session.round.number)
+        frame(window)
+        if step == 90:
+            assert_not_blank(snapshot(window, shots_dir, "replay-round"), "replay")
+    results = window.current_view
+    assert isinstance(results, ResultsView) and holes_seen == {1, 2, 3}
+    assert [[r.strokes for r in card] for card in results.round.cards] == \
+        [[h.final[seat].strokes + h.final[seat].penalties for h in record.holes] for seat in (0, 1)]
+
+
+def test_players_type_their_names_and_the_game_keeps_them(window, shots_dir):  # noqa: F811
+    from polygolf.game.views.menu import MenuView
+    from polygolf.game.views.names import NamesView
+
+    from .test_screens import send
+
+    game = Game.load()
+    ScreenFlow(window, game).menu()
+    click(window, "players")
+    click(window, "names")
+    names = window.current_view
+    assert isinstance(names, NamesView) and len(names.boxes) == 2
+    for typed in ("Ann", "Ann"):  # a repeated name is told apart
+        for _ in range(len("Player 1")):
+            send(window, "on_text_motion", arcade.key.MOTION_BACKSPACE)
+        send(window, "on_text", typed)
+        names.on_draw()
+        key(window, arcade.key.TAB)
+    assert [box.text for box in names.boxes] == ["Ann", "Ann"]
+    assert_not_blank(snapshot(window, shots_dir, "names"), "names")
+    key(window, arcade.key.ENTER)
+    assert isinstance(window.current_view, MenuView)
+    assert window.current_view.buttons["names"].text == "Names: Ann, Ann 2"
+    assert Game.load().players == ["Ann", "Ann 2"]  # kept for the next launch

@@ -19,6 +19,8 @@ import pytest
 from polygolf.engine.loading.paths import HOLES_DIR, SCENES_DIR, THEMES_DIR
 from polygolf.game.cli import main
 
+from .test_scene_cli import GOOD
+
 HOLE = textwrap.dedent("""\
     name: Case
     par: 3
@@ -26,16 +28,7 @@ HOLE = textwrap.dedent("""\
       - {at: [0, 0], borders: open-e}
       - {at: [1, 0], borders: open-w}
     """)
-SCENE = textwrap.dedent("""\
-    name: case
-    bodies:
-      - name: ball
-        shape: {regular: 4, radius: 0.5}
-        position: [3.0, 0.0]
-        velocity: [-10.0, 0.0]
-    walls:
-      - box: {center: [-1.0, 0.0], half: [1.0, 5.0]}
-    """)
+SCENE = GOOD  # the scene test's well-formed scene, broken below one way at a time
 COURSES = "courses:\n  - name: Case\n    holes: [case]\n"
 LIBRARY = (HOLES_DIR / "tiles.yaml").read_text()
 THEME = (THEMES_DIR / "grass.yaml").read_text()

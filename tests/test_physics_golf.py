@@ -172,3 +172,14 @@ def test_water_never_puts_the_ball_back_in_a_windmills_sweep():
     water = Water(keep_out=((10.0, 3.0, 2.4),), fallback=(3.0, 3.0))
     assert water.put_back(11.0, 3.5) == (3.0, 3.0)  # in the sweep: the tee instead
     assert water.put_back(6.0, 3.0) == (6.0, 3.0)  # clear of it: where it last rested
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_a_ball_wedged_in_a_v_groove_comes_to_rest(preset):
+    with scene_sim("v-groove", preset) as sim:
+        sim.run(4.0)
+        ball = sim.body("ball")
+        y = ball.y
+        sim.run(1.0)
+        assert ball.asleep and ball.y == y  # no creep
+        assert sim.metrics.max_penetration <= LINEAR_SLOP + 0.01

@@ -142,9 +142,10 @@ SCENE_PIPELINES = {
     "hover-drop": ["integrate", "spin", "gravity", "ccd", *CONTACT],
     "body-tunnel": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
     "plate-tunnel": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
+    "v-groove": ["integrate", "spin", "gravity", "ccd", *CONTACT, "restitution"],
     "dog-leg-rail": ["integrate", "spin", "drag", "ccd", *CONTACT, "restitution", "cup"],
 }
-FRICTION = {"corner", "deep-overlap", "fast-spin", "pile", "resting-contact", "ghost-corner", "hover-drop",
+FRICTION = {"v-groove", "corner", "deep-overlap", "fast-spin", "pile", "resting-contact", "ghost-corner", "hover-drop",
             "dog-leg-rail"}
 
 

@@ -26,9 +26,41 @@ from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import BLOCK_MAX_CONDITION, LINEAR_SLOP, MAX_CORRECTION, POSITION_BETA
 
 
-def solve(manifolds: list[Manifold], knobs: Knobs, dt: float, friction: bool) -> bool:
-    """One substep's contact solve: velocities, then position error removed without touching them.
-    Returns True if the warm start was thrown away for a cold solve (see below)."""
+def islands(manifolds: list[Manifold]) -> list[list[Manifold]]:
+    """The manifolds in groups that share no dynamic body (union-find), each in its original order.
+    Groups do not interact, so each is solved on its own: a decision about one (the cold restart
+    below) never touches another, and a body solves the same alone as beside others it never meets."""
+    parent: dict[int, int] = {}
+
+    def root(key: int) -> int:
+        while parent.setdefault(key, key) != key:
+            parent[key] = parent[parent[key]]
+            key = parent[key]
+        return key
+
+    for m in manifolds:
+        dynamic = [id(b) for b in (m.body_a, m.body_b) if b.inv_mass > 0.0]
+        for other in dynamic[1:]:
+            parent[root(other)] = root(dynamic[0])
+    groups: dict[int, list[Manifold]] = {}
+    for m in manifolds:
+        anchor = next((id(b) for b in (m.body_a, m.body_b) if b.inv_mass > 0.0), id(m))
+        groups.setdefault(root(anchor), []).append(m)
+    return list(groups.values())
+
+
+def solve(manifolds: list[Manifold], knobs: Knobs, dt: float, friction: bool) -> int:
+    """One substep's contact solve, island by island. Returns how many islands threw their warm
+    start away for a cold solve (see `solve_island`)."""
+    groups = islands(manifolds)
+    if len(groups) == 1:
+        return int(solve_island(manifolds, knobs, dt, friction))
+    return sum(solve_island(group, knobs, dt, friction) for group in groups)
+
+
+def solve_island(manifolds: list[Manifold], knobs: Knobs, dt: float, friction: bool) -> bool:
+    """Velocities, then position error removed without touching them. Returns True if the warm start
+    was thrown away for a cold solve (see below)."""
     prepare(manifolds)
     cold_restart = False
     if knobs.warm_start:

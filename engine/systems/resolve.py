@@ -16,5 +16,5 @@ class ResolveProcessor(esper.Processor):
 
     def process(self) -> None:
         manifolds = self.contacts.manifolds
-        if manifolds and solver.solve(manifolds, self.config.knobs, self.config.dt, self.friction):
-            self.stats.cold_restarts += 1
+        if manifolds:
+            self.stats.cold_restarts += solver.solve(manifolds, self.config.knobs, self.config.dt, self.friction)

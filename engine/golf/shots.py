@@ -1,0 +1,80 @@
+"""Many candidate shots of one hole at once: K balls in one world that meet the walls, windmills,
+hazards and cup but not each other (`collide_bodies=False`), stepped in lockstep. Each ball's physics
+is exactly that of the same shot played alone (contacts are solved island by island), so a search can
+try a thousand shots in one world and trust the one it picks."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+
+import esper
+
+from polygolf.engine.assembly.assemble import assemble
+from polygolf.engine.components import Ball, Body, HoleState, ShotInput
+from polygolf.engine.golf.holes import Hole
+from polygolf.engine.golf.world import hole_spec
+from polygolf.engine.loading.scene import ShapeSpec
+from polygolf.engine.physics.presets import Knobs
+from polygolf.engine.physics.settings import FRAME_DT
+from polygolf.engine.physics.shot import clamp_arrow
+
+
+@dataclass(frozen=True)
+class Shot:
+    """A ball at rest at `start`, pushed at `grab` (offset from its centre, m) along `arrow` (m)."""
+
+    start: tuple[float, float]
+    arrow: tuple[float, float]
+    grab: tuple[float, float] = (0.0, 0.0)
+
+
+@dataclass
+class ShotResult:
+    rest: tuple[float, float]  # where the ball ended (the cup's centre if it dropped)
+    holed: bool
+    seconds: float  # game time until it dropped or came to rest (or the limit)
+    penalties: int  # strokes added by water
+    path: list[tuple[float, float]] = field(default_factory=list)  # a point a frame until then, if asked for
+
+
+def simulate_shots(hole: Hole, shape: ShapeSpec, shots: list[Shot], knobs: Knobs | str = "balanced",
+                   max_seconds: float = 20.0, path: bool = False) -> list[ShotResult]:
+    """Every shot simulated to rest (or `max_seconds`) in one world; results in the shots' order."""
+    if not shots:
+        return []
+    alone = hole_spec(hole, shape)
+    template = alone.bodies[0]
+    balls = [replace(template, name=f"shot-{k}", position=s.start, asleep=True,
+                     extras=(Ball(*s.start), ShotInput(), HoleState(par=hole.spec.par, max_strokes=99)))
+             for k, s in enumerate(shots)]
+    sim = assemble(replace(alone, bodies=balls, collide_bodies=False), knobs)
+    try:
+        esper.switch_world(sim.world)
+        rows = sorted(esper.get_components(Body, ShotInput, HoleState))  # entity order = shots' order
+        for (_, (body, shot_input, _)), shot in zip(rows, shots):
+            arrow = clamp_arrow(shot.arrow) or (0.0, 0.0)
+            shot_input.request((body.x + shot.grab[0], body.y + shot.grab[1]), arrow)
+        done: list[float | None] = [None] * len(shots)
+        paths: list[list[tuple[float, float]]] = [[] for _ in shots]
+        frames = 0
+        while frames < round(max_seconds / FRAME_DT) and None in done:
+            sim.step(1, measure=False)
+            frames += 1
+            for k, (_, (body, _, state)) in enumerate(rows):
+                if path and done[k] is None:
+                    paths[k].append((body.x, body.y))
+                if done[k] is None and (state.holed or body.asleep):
+                    done[k] = frames * FRAME_DT
+        return [ShotResult(rest=(body.x, body.y), holed=state.holed,
+                           seconds=done[k] if done[k] is not None else frames * FRAME_DT,
+                           penalties=state.penalties, path=paths[k])
+                for k, (_, (body, _, state)) in enumerate(rows)]
+    finally:
+        sim.close()
+
+
+def fan(start: tuple[float, float], directions: int, powers: list[float]) -> list[Shot]:
+    """Shots from `start` in `directions` evenly spread directions at each power (arrow length, m)."""
+    return [Shot(start, (p * math.cos(2 * math.pi * k / directions), p * math.sin(2 * math.pi * k / directions)))
+            for p in powers for k in range(directions)]

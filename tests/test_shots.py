@@ -1,0 +1,66 @@
+"""Many shots at once (`golf.shots.simulate_shots`): each ball of the shared world ends exactly where
+the same shot played alone ends, and the results report drops, time and water penalties."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from polygolf.engine.golf.golfer import golfer_for
+from polygolf.engine.golf.holes import find_course, load_all_courses
+from polygolf.engine.golf.play import HolePlay
+from polygolf.engine.golf.shots import Shot, fan, simulate_shots
+from polygolf.engine.loading.scene import ShapeSpec
+
+STAR = ShapeSpec(star=(5, 2), radius=1.0)
+
+
+@pytest.fixture(scope="module")
+def courses():
+    return load_all_courses()[0]
+
+
+def _alone(hole, shape, shot: Shot, preset: str):
+    play = HolePlay(hole, shape, preset)
+    try:
+        play.place_ball(*shot.start)
+        play.shoot((shot.start[0] + shot.grab[0], shot.start[1] + shot.grab[1]), shot.arrow)
+        for _ in range(1200):
+            play.step()
+            if play.ball_at_rest or play.state.finished:
+                break
+        return (play.ball.x, play.ball.y), play.state.holed, play.state.penalties
+    finally:
+        play.close()
+
+
+@pytest.mark.parametrize(("course", "number"), [("hazards", 9), ("meadow", 8)])  # gauntlet, pinball
+def test_each_shot_of_a_batch_ends_bit_for_bit_as_played_alone(courses, course, number):
+    hole = find_course(courses, course).holes[number - 1]
+    tee = hole.layout.tee
+    shots = [Shot(tee, (4.0 * math.cos(a), 4.0 * math.sin(a)), grab=(0.1 * math.sin(3 * a), 0.0))
+             for a in (0.0, 0.4, 1.3, 2.9, 4.4, 5.9)]
+    batch = simulate_shots(hole, STAR, shots, "fast")
+    for shot, result in zip(shots, batch):
+        rest, holed, penalties = _alone(hole, STAR, shot, "fast")
+        assert (result.rest, result.holed, result.penalties) == (rest, holed, penalties)
+
+
+def test_a_planned_putt_drops_and_says_when(courses):
+    hole = find_course(courses, "meadow").holes[0]  # Straight: the cup is in line with the tee
+    origin, arrow = golfer_for(hole).plan(hole.layout.tee)
+    result, miss = simulate_shots(hole, STAR, [Shot(origin, arrow), Shot(origin, (-arrow[0], -arrow[1]))])
+    assert result.holed and result.rest == hole.layout.cup and 1.0 < result.seconds < 20.0
+    assert not miss.holed and math.dist(miss.rest, hole.layout.cup) > 5.0
+
+
+def test_water_costs_a_penalty_and_the_ball_goes_back(courses):
+    hole = find_course(courses, "hazards").holes[1]  # Water Carry
+    tee = hole.layout.tee
+    results = simulate_shots(hole, STAR, fan(tee, 16, [1.5, 3.0]), "fast", path=True)
+    wet = [r for r in results if r.penalties]
+    assert wet, "no shot of the fan found the water"
+    for r in wet:
+        assert r.penalties == 1 and r.rest == tee  # put back where it last rested: the tee
+        assert len(r.path) == round(r.seconds * 60)

@@ -8,6 +8,7 @@ import esper
 from polygolf.engine.assembly.assemble import assemble, resolve_knobs
 from polygolf.engine.assembly.simulation import Simulation
 from polygolf.engine.components import Ball, Body, Bumper, Collider, HoleState, ShotInput, Windmill
+from polygolf.engine.components.resources import Impact
 from polygolf.engine.golf.holes import Hole
 from polygolf.engine.golf.layout import HoleLayout
 from polygolf.engine.golf.world import hole_spec
@@ -60,6 +61,11 @@ class HolePlay:
     @property
     def contact_count(self) -> int:
         return self.sim.res.contacts.count
+
+    def drain_events(self) -> tuple[list[tuple[str, int]], list[Impact]]:
+        """What happened since the last call, for the front end's sound and drawing: golf events
+        ("shot", "holed", "penalty") and impacts (`components.resources.Impact`), oldest first."""
+        return self.sim.res.events.drain()
 
     def system_seconds(self) -> dict[str, float]:
         """Seconds each stage has spent in profiled steps so far."""

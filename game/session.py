@@ -8,6 +8,7 @@ from polygolf.engine.golf.holes import Course, Hole, load_all_courses
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.game.shapes import CATALOGUE
+from polygolf.game.sound import ArcadePlayer, SoundBoard
 from polygolf.game.theme import Theme, load_themes
 
 _NAMES = {-4: "Condor", -3: "Albatross", -2: "Eagle", -1: "Birdie", 0: "Par", 1: "Bogey",
@@ -97,6 +98,7 @@ class Game:
     round: Round | None = None
     guide_seen: bool = False
     problems: list[str] = field(default_factory=list)  # content that could not be read, for the menu
+    sound: SoundBoard = field(default_factory=lambda: SoundBoard(ArcadePlayer()))
 
     @classmethod
     def load(cls) -> Game:

@@ -15,7 +15,7 @@ from polygolf.engine.golf.world import hole_spec
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.physics.polygon import Outline
 from polygolf.engine.physics.presets import Knobs
-from polygolf.engine.physics.shot import clamp_arrow
+from polygolf.engine.physics.shot import clamp_arrow, shot_velocity
 
 
 class HolePlay:
@@ -81,6 +81,15 @@ class HolePlay:
             return False
         self._shot.request(origin, vector)
         return True
+
+    def shot_spin(self, origin: tuple[float, float], arrow: tuple[float, float]) -> float:
+        """The spin (rad/s) this shot would give the ball, for the aiming arrow to show."""
+        ball = self.ball
+        vector = clamp_arrow(arrow)
+        if vector is None:
+            return 0.0
+        return shot_velocity(ball.mass, ball.inertia, self.collider.radius, origin[0] - ball.x, origin[1] - ball.y,
+                             *vector, rotates=ball.inv_inertia > 0.0)[2]
 
     def place_ball(self, x: float, y: float) -> None:
         """Put the ball at rest at (x, y) (where a hazard would put it back too)."""

@@ -8,6 +8,7 @@ import arcade
 from arcade.gui import UIAnchorLayout, UIBoxLayout, UIView
 
 from polygolf.game.session import Game
+from polygolf.game.views.navigation import window_key
 from polygolf.game.views.widgets import themed_button, title
 
 GUIDE = """\
@@ -37,7 +38,7 @@ class GuideView(UIView):
         self.body = arcade.Text(GUIDE, 0, 0, theme.rgba("text"), 15, multiline=True, width=760,
                                 anchor_x="center", anchor_y="top")
         row = UIBoxLayout(vertical=False, space_between=16)
-        go = themed_button(theme, "Got it" if game.guide_seen else "Got it: tee off", width=260)
+        go = themed_button(theme, "Got it" if game.guide_seen else "Got it: tee off", width=260, clicks=self.game.sound)
         go.on_click = self.on_continue  # type: ignore[method-assign]
         row.add(go)
         anchor = UIAnchorLayout()
@@ -49,6 +50,8 @@ class GuideView(UIView):
         self.then()
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:
+        if window_key(self.window, self.game, symbol):
+            return
         if symbol in (arcade.key.ENTER, arcade.key.RETURN, arcade.key.SPACE, arcade.key.ESCAPE):
             self.on_continue()
 

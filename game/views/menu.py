@@ -10,7 +10,7 @@ from polygolf.engine.golf.layout import ball_outline
 from polygolf.game.drawing import BallArt
 from polygolf.game.session import Game
 from polygolf.game.shapes import random_shape
-from polygolf.game.views.navigation import Navigator
+from polygolf.game.views.navigation import Navigator, window_key
 from polygolf.game.views.widgets import themed_button, title
 
 
@@ -39,10 +39,11 @@ class MenuView(UIView):
             ("shape", f"Polygon: {game.shape_label}", self.on_shape),
             ("random", "Random polygon", self.on_random),
             ("course", f"Course: {game.course.name}" if game.course else "No course could be read", self.on_course),
+            ("volume", f"Sound: {self.volume_label}", self.on_volume),
             ("guide", "How to play", self.on_guide),
             ("quit", "Quit", self.on_quit),
         ):
-            button = themed_button(theme, text)
+            button = themed_button(theme, text, clicks=self.game.sound)
             button.on_click = action  # type: ignore[method-assign]
             column.add(button)
             self.buttons[key] = button
@@ -77,6 +78,15 @@ class MenuView(UIView):
         self.game.next_course()
         self.build()
 
+    @property
+    def volume_label(self) -> str:
+        sound = self.game.sound
+        return "off" if sound.muted or sound.volume == 0 else f"{round(sound.volume * 100)}%"
+
+    def on_volume(self, _event=None) -> None:
+        self.game.sound.next_volume()
+        self.build()
+
     def on_guide(self, _event=None) -> None:
         self.flow.guide()
 
@@ -84,6 +94,8 @@ class MenuView(UIView):
         self.flow.quit()
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:
+        if window_key(self.window, self.game, symbol):
+            return
         if symbol in (arcade.key.ENTER, arcade.key.RETURN, arcade.key.SPACE):
             self.on_play()
         elif symbol == arcade.key.ESCAPE:

@@ -129,7 +129,7 @@ def _texture(shapes: ShapeElementList, kind: str, region: Region, colour: RGBA, 
 
 
 ZONE_COLOURS = {"sand": "sand_zone", "water": "water", "ice": "ice", "slope": "slope"}
-SLOPE_TINT = 0.3  # a slope's floor: the green this far toward the slope colour, under chevrons in that colour
+SLOPE_TINT = 0.5  # a slope's floor: the green this far toward the slope colour, under chevrons in that colour
 
 
 class HoleArt:

@@ -107,7 +107,8 @@ def _texture(shapes: ShapeElementList, kind: str, region: Region, colour: RGBA, 
             if all(region.contains(*p) for p in arc):
                 shapes.append(create_line_strip(arc, ripple, 0.05))
     elif kind == "ice":  # a sheen: pale diagonal streaks
-        streak = shade(colour, 0.75, alpha=200)
+        # White glints on a tinted sheet; on a nearly white one, bluish-grey glints (white would vanish).
+        streak = shade(colour, 0.75, alpha=200) if sum(colour[:3]) < 660 else (*shade(colour, -0.3)[:3], 220)
         for x, y in _grid_points(region, 1.4):
             length = rng.uniform(0.35, 0.7)
             a, b = (x - length / 2, y - length / 2), (x + length / 2, y + length / 2)
@@ -240,8 +241,8 @@ class PolygonArt:
             inner = min(math.hypot(x, y) for x, y in local)
             x, y = local[0]
             reach = math.hypot(x, y) or 1.0
-            dot = 0.75 * inner
-            dx, dy = x / reach * 0.55 * inner, y / reach * 0.55 * inner
+            dot = 0.55 * inner
+            dx, dy = x / reach * 0.5 * inner, y / reach * 0.5 * inner
             self.shapes.append(create_ellipse_filled(dx, dy, dot, dot, self.edge, num_segments=20))
             self.shapes.append(create_ellipse_filled(dx, dy, 0.45 * dot, 0.45 * dot, shade(self.fill, 0.7),
                                                      num_segments=16))
@@ -297,9 +298,10 @@ def draw_arrow(origin: polygon.Vec, tip: polygon.Vec, theme: Theme, centre: poly
     colour = power_colour(theme, fraction)
     width = 0.08 + 0.16 * fraction
     outline = shade(colour, -0.6) if sum(colour[:3]) > 380 else shade(colour, 0.6)
-    arcade.draw_line(origin[0], origin[1], end[0], end[1], outline, width + 0.06)
-    arcade.draw_line(origin[0], origin[1], end[0], end[1], colour, width)
     head = 0.35 + 0.25 * fraction
+    base = (end[0] - ux * head * 0.8, end[1] - uy * head * 0.8)  # the shaft stops inside the head
+    arcade.draw_line(origin[0], origin[1], base[0], base[1], outline, width + 0.06)
+    arcade.draw_line(origin[0], origin[1], base[0], base[1], colour, width)
     left = (end[0] - ux * head - uy * head * 0.6, end[1] - uy * head + ux * head * 0.6)
     right = (end[0] - ux * head + uy * head * 0.6, end[1] - uy * head - ux * head * 0.6)
     arcade.draw_polygon_filled([end, left, right], colour)
@@ -316,15 +318,16 @@ def draw_spin(centre: polygon.Vec, spin: float, ball_radius: float, colour: RGBA
     start = 90.0
     end = start + sweep if spin > 0 else start - sweep
     low, high = min(start, end), max(start, end)
-    arcade.draw_arc_outline(centre[0], centre[1], 2 * radius, 2 * radius, outline, low, high, 0.13, num_segments=64)
-    arcade.draw_arc_outline(centre[0], centre[1], 2 * radius, 2 * radius, colour, low, high, 0.07, num_segments=64)
+    arcade.draw_arc_outline(centre[0], centre[1], 2 * radius, 2 * radius, outline, low, high, 0.16, num_segments=64)
+    arcade.draw_arc_outline(centre[0], centre[1], 2 * radius, 2 * radius, colour, low, high, 0.1, num_segments=64)
     a = math.radians(end)
     px, py = centre[0] + radius * math.cos(a), centre[1] + radius * math.sin(a)
     tx, ty = -math.sin(a) * (1 if spin > 0 else -1), math.cos(a) * (1 if spin > 0 else -1)  # along the turn
     nx, ny = math.cos(a), math.sin(a)
-    head = [(px + tx * 0.2, py + ty * 0.2), (px - tx * 0.05 + nx * 0.14, py - ty * 0.05 + ny * 0.14),
-            (px - tx * 0.05 - nx * 0.14, py - ty * 0.05 - ny * 0.14)]
+    head = [(px + tx * 0.42, py + ty * 0.42), (px - tx * 0.06 + nx * 0.14, py - ty * 0.06 + ny * 0.14),
+            (px - tx * 0.06 - nx * 0.14, py - ty * 0.06 - ny * 0.14)]
     arcade.draw_polygon_filled(head, colour)
+    arcade.draw_polygon_outline(head, outline, 0.03)
 
 
 def fit_zoom(bounds: tuple[float, float, float, float], width: float, height: float) -> float:

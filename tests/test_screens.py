@@ -124,6 +124,10 @@ def test_every_screen_draws_something(window, game, shots_dir):
     pixels = snapshot(window, shots_dir, "play-aiming")
     assert_not_blank(pixels, "play")
     key(window, arcade.key.ESCAPE)  # cancels the shot, does not pause
+    aim(window, play, (ball.x, ball.y + 0.3), (4.0, 0.8), release=False)  # grabbed off-centre: spin shown
+    assert play.world.shot_spin(play.grab, (play.tip[0] - play.grab[0], play.tip[1] - play.grab[1])) < -1.0
+    assert_not_blank(snapshot(window, shots_dir, "play-aiming-spin"), "play")
+    key(window, arcade.key.ESCAPE)
     assert not play.aiming and window.current_view is play
     key(window, arcade.key.ESCAPE)  # now pauses
     assert isinstance(window.current_view, PauseView)
@@ -253,7 +257,7 @@ def test_f3_overlay_shows_each_systems_cost_and_keys_switch_the_preset(window, g
     lines = play.overlay_lines()
     assert lines[0].startswith("preset balanced: 4 substeps x 8 iterations")
     fps_line = next(line for line in lines if line.startswith("fps"))
-    assert float(fps_line.split()[1]) == pytest.approx(60.0) and "frame  16.7 ms" in fps_line
+    assert float(fps_line.split()[1]) == pytest.approx(60.0) and "frame 16.7 ms" in fps_line
     x0, y0, x1, y1 = play.world.layout.bounds
     from polygolf.game.views.play import OVERLAY_WIDTH
 

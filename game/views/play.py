@@ -301,7 +301,7 @@ class PlayView(arcade.View):
         fps = 1 / mean if mean > 0 else 0.0
         lines = [f"preset {world.preset_name}: {knobs.substeps} substeps x {knobs.iterations} iterations",
                  f"  {knobs.position_correction}, ccd {'on' if knobs.ccd else 'off'}",
-                 f"fps {fps:5.1f}   frame {mean * 1e3:5.1f} ms (worst {max(frames) * 1e3:.1f})",
+                 f"fps {fps:5.1f}  frame {mean * 1e3:4.1f} ms  max {max(frames) * 1e3:.1f}",
                  f"draw {self.draw_ms:5.2f} ms   physics {total:6.0f} us",
                  f"contacts {world.contact_count}   physics frames {self.clock.frames}",
                  ""]

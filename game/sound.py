@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Protocol
 
 from polygolf.engine.components.resources import Impact
-from polygolf.engine.physics.settings import MAX_SHOT_SPEED
+from polygolf.engine.physics.settings import FRAME_DT, MAX_SHOT_SPEED
 
 SOUNDS_DIR = Path(__file__).resolve().parent / "sounds"
 SOUND_NAMES = ("hit", "knock", "drop", "splash", "boing", "click")
@@ -24,6 +24,8 @@ AUDIBLE_SPEED = 0.3  # m/s: a softer touch on a wall is not heard
 LOUDEST_KNOCK_SPEED = 10.0  # m/s: a wall hit this fast (or faster) knocks at full volume
 QUIETEST = 0.12  # the loudness of the softest sound still played (a whisper, not nothing)
 VOLUME_STEPS = (0.0, 0.25, 0.5, 0.75, 1.0)
+REPEAT_GAP = 0.08  # game seconds: the same sound again this soon only if louder (a ball chattering
+# along a wall knocks a few times, not sixty times a second)
 
 IMPACT_SOUNDS = {"shot": ("hit", MAX_SHOT_SPEED), "wall": ("knock", LOUDEST_KNOCK_SPEED),
                  "body": ("knock", LOUDEST_KNOCK_SPEED), "bumper": ("boing", LOUDEST_KNOCK_SPEED)}
@@ -51,15 +53,19 @@ class SoundBoard:
         self.player = player
         self.volume = volume
         self.muted = muted
+        self.time = 0.0  # game seconds heard so far
+        self.last: dict[str, tuple[float, float]] = {}  # sound -> (when, loudness) it last played in `hear`
 
     def play(self, name: str, loudness_: float = 1.0) -> None:
         level = loudness_ * self.volume
         if level > 0.0 and not self.muted:
             self.player.play(name, level)
 
-    def hear(self, events: Iterable[tuple[str, int]], impacts: Iterable[Impact]) -> None:
-        """One frame's golf events and impacts: each sound at most once a frame, at its loudest (a
-        face landing flat on a wall is one knock, not one per substep)."""
+    def hear(self, events: Iterable[tuple[str, int]], impacts: Iterable[Impact], seconds: float = FRAME_DT) -> None:
+        """One frame's (`seconds` of game time) golf events and impacts: each sound at most once a frame,
+        at its loudest (a face landing flat on a wall is one knock, not one per substep), and not again
+        within REPEAT_GAP unless louder."""
+        self.time += seconds
         loudest: dict[str, float] = {}
         for impact in impacts:
             name, full = IMPACT_SOUNDS.get(impact.kind, ("knock", LOUDEST_KNOCK_SPEED))
@@ -68,7 +74,10 @@ class SoundBoard:
             if kind in EVENT_SOUNDS:
                 loudest[EVENT_SOUNDS[kind]] = 1.0
         for name, level in loudest.items():
-            self.play(name, level)
+            when, before = self.last.get(name, (-REPEAT_GAP, 0.0))
+            if level > 0.0 and (self.time - when >= REPEAT_GAP or level > before):
+                self.last[name] = (self.time, level)
+                self.play(name, level)
 
     def click(self) -> None:
         self.play("click", 0.6)
@@ -101,7 +110,12 @@ class ArcadePlayer:
 
     def _load(self) -> dict[str, object]:
         import arcade
+        from pyglet.media import get_audio_driver
 
+        driver = get_audio_driver()
+        if driver is None or type(driver).__name__ == "SilentDriver":
+            # Its players cost a thread's time each and are heard by nobody.
+            raise RuntimeError("no audio device (pyglet fell back to its silent driver)")
         return {name: arcade.Sound(self.folder / f"{name}.wav") for name in SOUND_NAMES}
 
     def play(self, name: str, volume: float) -> None:

@@ -250,7 +250,7 @@ class PlayView(arcade.View):
             for poses, mill in zip(self.windmill_poses, world.windmills):
                 poses.moved_to((mill.x, mill.y, mill.angle))
             self.trail.append(self.ball_poses.current[:2])
-        self.hear(world)
+        self.hear(world, delta_time)
         self.animate(delta_time)
         self.banner_time = max(0.0, self.banner_time - delta_time)
         self.update_hud()
@@ -259,10 +259,10 @@ class PlayView(arcade.View):
             if self.finished_for >= FINISH_PAUSE:
                 self.finish_hole()
 
-    def hear(self, world: HolePlay) -> None:
+    def hear(self, world: HolePlay, seconds: float) -> None:
         """This frame's events: played by the sound board, and started as animations."""
         events, impacts = world.drain_events()
-        self.game.sound.hear(events, impacts)
+        self.game.sound.hear(events, impacts, seconds)
         for kind, _ in events:
             if kind == "holed":
                 self.drop_from, self.drop_time = self.ball_poses.previous, 0.0

@@ -446,3 +446,28 @@ def test_the_ball_slides_into_the_cup_from_where_it_dropped(window, game, shots_
     assert world.state.holed and play.drop_from is not None
     assert math.dist(play.drop_from[:2], (cx, cy)) > 0.05  # it was drawn from where it was, not the centre
     assert_not_blank(snapshot(window, shots_dir, "play-holed-banner"), "holed")
+
+
+def test_a_fast_ball_over_the_cup_wobbles_and_rolls_on(window, game):
+    play = show(window, PlayView(game, game.start_round(), ScreenFlow(window, game)))
+    world = play.world
+    cx, cy = world.layout.cup
+    world.place_ball(cx - 2.0, cy)
+    world.shoot((cx - 2.0, cy), (2.4, 0.0))  # 12 m/s: far too fast to drop
+    wobbled, furthest = False, world.ball.x
+    for _ in range(40):
+        frame(window, draw=True)
+        wobbled |= play.over_cup_time > 0
+        furthest = max(furthest, world.ball.x)
+    assert wobbled and not world.state.holed and furthest > cx + 0.8  # over the cup and past it
+
+
+def test_f11_switches_fullscreen_and_back(window, game):
+    show(window, PlayView(game, game.start_round(), ScreenFlow(window, game)))
+    before = window.fullscreen
+    key(window, arcade.key.F11)
+    assert window.fullscreen is not before
+    key(window, arcade.key.F11)
+    assert window.fullscreen is before
+    window.set_size(1280, 720)
+    send(window, "on_resize", 1280, 720)

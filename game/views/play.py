@@ -241,6 +241,7 @@ class PlayView(arcade.View):
         if world is None:
             return
         self.frame_seconds.append(delta_time)
+        events, impacts = [], []
         for _ in range(self.clock.advance(delta_time)):
             if self.overlay:
                 self.step_profiled(world)
@@ -250,7 +251,11 @@ class PlayView(arcade.View):
             for poses, mill in zip(self.windmill_poses, world.windmills):
                 poses.moved_to((mill.x, mill.y, mill.angle))
             self.trail.append(self.ball_poses.current[:2])
-        self.hear(world, delta_time)
+            stepped, struck = world.drain_events()
+            self.start_animations(stepped)
+            events += stepped
+            impacts += struck
+        self.game.sound.hear(events, impacts, delta_time)
         self.animate(delta_time)
         self.banner_time = max(0.0, self.banner_time - delta_time)
         self.update_hud()
@@ -259,10 +264,8 @@ class PlayView(arcade.View):
             if self.finished_for >= FINISH_PAUSE:
                 self.finish_hole()
 
-    def hear(self, world: HolePlay, seconds: float) -> None:
-        """This frame's events: played by the sound board, and started as animations."""
-        events, impacts = world.drain_events()
-        self.game.sound.hear(events, impacts, seconds)
+    def start_animations(self, events: list[tuple[str, int]]) -> None:
+        """A physics frame's events, seen right after it: the pose before it is where the ball was."""
         for kind, _ in events:
             if kind == "holed":
                 self.drop_from, self.drop_time = self.ball_poses.previous, 0.0

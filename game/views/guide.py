@@ -15,16 +15,19 @@ GUIDE = """\
 Your ball is a polygon. Get it into the cup in as few strokes as you can.
 
 Shooting: when the ball has stopped, press on it, drag an arrow and let go. The arrow points where the \
-ball goes; the longer it is, the harder the shot (it turns red at full power). Esc cancels a shot.
+ball goes; the longer it is, the harder the shot (it grows wider and darker toward full power). Esc \
+cancels a shot.
 
 Spin: where you grab the ball sets its spin. Grab it at the centre for a straight shot. Grab it off \
-centre and it turns as it goes, and a spinning polygon kicks sideways when it meets a wall. Spin is \
-capped, so a soft shot never carries a wild spin.
+centre and it turns as it goes (the arc round the ball shows which way), and a spinning polygon kicks \
+sideways when it meets a wall. Spin is capped, so a soft shot never carries a wild spin.
 
 The cup: the ball drops only if it is slow enough over the cup; fastest over the middle, not at all \
 on the rim. Too fast and it lips out.
 
-Scoring: each hole has a par. After 10 strokes the ball is picked up. R restarts a hole; Esc pauses."""
+Scoring: each hole has a par. After 10 strokes the ball is picked up. R restarts a hole; Esc pauses.
+
+View: the mouse wheel zooms, a right-drag or the arrow keys pan, 0 fits the hole. F11 fullscreen, M mute."""
 
 
 class GuideView(UIView):

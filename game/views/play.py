@@ -66,6 +66,7 @@ class PlayView(arcade.View):
         self.system_us: dict[str, float] = {}
         self.frame_seconds: deque[float] = deque(maxlen=120)  # real time between updates, for F3
         self.draw_ms = 0.0
+        self.clock = FixedStep()  # game time runs on across restarts and reloads
         self.world: HolePlay | None = None
         self.start_hole()
 
@@ -80,7 +81,6 @@ class PlayView(arcade.View):
         theme = self.game.theme
         self.hole_art = HoleArt(self.world.layout, theme, self.world.collider.radius)
         self.ball_art = PolygonArt(self.world.outline, theme)
-        self.clock = FixedStep()
         self.ball_poses = Poses(self.ball_pose())
         self.windmill_poses = [Poses((w.x, w.y, w.angle)) for w in self.world.windmills]
         self.trail: deque[tuple[float, float]] = deque(maxlen=TRAIL_FRAMES)

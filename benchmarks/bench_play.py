@@ -7,8 +7,9 @@ The scripted golfer plays each hole so the ball is moving most of the time. A fr
 (given the real time since the last frame, as arcade would: the accumulator steps as many 1/60 s
 physics frames as are due, plays sounds, updates the HUD) + on_draw + the buffer swap; FPS is
 1 / median frame time, so it is what the game could reach without vsync. "speed" is game time over
-real time: 1.00 means the ball rolls at real speed whatever the frame rate. The physics figure is
-the median time of one physics frame (HolePlay.step) as the view steps it.
+the real time the frames took (a hole's restart and the golfer's planning left out): 1.00 means the
+ball rolls at real speed whatever the frame rate; only frames longer than the 0.25 s catch-up cap
+lose time. The physics figure is the median time of one physics frame (HolePlay.step) as the view steps it.
 """
 
 from __future__ import annotations
@@ -64,8 +65,9 @@ def main() -> None:
         frames, draws, physics = [], [], []
         timed_steps(world, physics)
         last = time.perf_counter()
-        started, stepped_before = 0.0, 0
+        played, stepped_before = 0.0, 0  # real seconds handed to the game; frames stepped before them
         for i in range(args.frames + 10):
+            outside = time.perf_counter()  # a restart and the golfer's thinking are not play time
             if world.state.finished:
                 view.restart_hole()
                 world = view.world
@@ -73,9 +75,12 @@ def main() -> None:
                 golfer = golfer_for(world.hole)
             if world.ball_at_rest:
                 world.shoot(*golfer.plan((world.ball.x, world.ball.y)))
+            last += time.perf_counter() - outside
             t0 = time.perf_counter()
             if i == 10:
-                started, stepped_before = t0, len(physics)
+                stepped_before = len(physics)
+            if i >= 10:
+                played += t0 - last
             view.on_update(t0 - last)  # the accumulator steps what the real time calls for
             last = t0
             t1 = time.perf_counter()
@@ -85,7 +90,7 @@ def main() -> None:
             t2 = time.perf_counter()
             frames.append(t2 - t0)
             draws.append(t2 - t1)
-        speed = (len(physics) - stepped_before) * FRAME_DT / (time.perf_counter() - started)
+        speed = (len(physics) - stepped_before) * FRAME_DT / played
         frames, draws = frames[10:], draws[10:]
         speeds.append(speed)
         all_frames += frames

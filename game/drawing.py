@@ -264,8 +264,6 @@ class PolygonArt:
         arcade.draw_polygon_outline(points, self.edge, 0.04)
 
 
-BallArt = PolygonArt  # the menu's name for it
-
 
 def draw_trail(points: Sequence[polygon.Vec], colour: RGBA, width: float) -> None:
     """The ball's recent path, fading toward its oldest point."""

@@ -7,7 +7,7 @@ import arcade
 from arcade.gui import UIAnchorLayout, UIBoxLayout, UIView
 
 from polygolf.engine.golf.layout import ball_outline
-from polygolf.game.drawing import BallArt
+from polygolf.game.drawing import PolygonArt
 from polygolf.game.session import Game
 from polygolf.game.shapes import random_shape
 from polygolf.game.views.navigation import Navigator, window_key
@@ -50,7 +50,7 @@ class MenuView(UIView):
         anchor = UIAnchorLayout()
         anchor.add(column, anchor_x="center_x", anchor_y="center_y", align_x=-180, align_y=-40)
         self.ui.add(anchor)
-        self.ball_art = BallArt(ball_outline(game.shape, 1.0), theme, scale=1.0)
+        self.ball_art = PolygonArt(ball_outline(game.shape, 1.0), theme, scale=1.0)
         self.preview = arcade.Camera2D()
         # Content that could not be read is left out of the game and said here, not crashed on.
         shown = game.problems[:4] + ([f"... and {len(game.problems) - 4} more"] if len(game.problems) > 4 else [])

@@ -158,7 +158,8 @@ def render_hole(course: str, hole: int, theme: str | None, shape: str | None, ou
         view = PlayView(game, game.start_round(hole - 1), StillFrame())
         window.show_view(view)
         view.on_draw()
-        image = arcade.get_image(0, 0, *window.get_framebuffer_size())
+        # Opaque, as on screen: the framebuffer's alpha would let a viewer's backdrop show through the HUD.
+        image = arcade.get_image(0, 0, *window.get_framebuffer_size()).convert("RGB")
         out.parent.mkdir(parents=True, exist_ok=True)
         image.save(out)
     finally:

@@ -1,59 +1,170 @@
 """Drawing a hole and the ball with batched shape lists, in world coordinates (metres).
 
-Nothing here imports arcade.gui, so `polygolf render` can draw in a headless (EGL) context.
+Everything that does not move is built once per hole into one ShapeElementList (floor, hazards with
+their textures, walls, the cup and its flag, the windmills' sweep); moving things (the ball, windmills)
+are shape lists moved and turned each frame. Nothing here imports arcade.gui, so `polygolf render` can
+draw in a headless (EGL) context.
 """
 
 from __future__ import annotations
 
 import math
+import random
 from collections.abc import Sequence
 
 import arcade
 from arcade.shape_list import (
     ShapeElementList,
     create_ellipse_filled,
+    create_ellipse_outline,
+    create_line,
     create_line_loop,
     create_line_strip,
     create_polygon,
     create_rectangle_filled,
 )
 
+from polygolf.engine.components.hazards import Region
 from polygolf.engine.golf.layout import HoleLayout
 from polygolf.engine.physics import polygon
+from polygolf.engine.physics.settings import MAX_SHOT_SPIN
 from polygolf.engine.physics.shot import clamp_arrow, shot_power
-from polygolf.game.theme import Theme
+from polygolf.game.theme import RGBA, Theme
 
 HUD_HEIGHT = 44  # pixels
 MARGIN = 1.0  # metres of background around the hole
+SHADOW = (0, 0, 0, 80)
+SHADOW_OFFSET = (0.07, -0.09)  # metres: light from the top left
+TEXTURE_SEED = 12  # sand speckles and ice streaks land in the same places every time
+
+
+def shade(colour: RGBA, amount: float, alpha: int | None = None) -> RGBA:
+    """`colour` mixed toward white (amount > 0) or black (amount < 0) by |amount|."""
+    target = 255 if amount > 0 else 0
+    mixed = tuple(round(c + (target - c) * abs(amount)) for c in colour[:3])
+    return (*mixed, colour[3] if alpha is None else alpha)  # type: ignore[return-value]
+
+
+def mix(a: RGBA, b: RGBA, t: float) -> RGBA:
+    """The colour `t` of the way from `a` to `b` (opaque)."""
+    return (*(round(x + (y - x) * t) for x, y in zip(a[:3], b[:3])), 255)  # type: ignore[return-value]
 
 
 def _filled(shapes: ShapeElementList, outline: Sequence[polygon.Vec], fill, edge, edge_width: float) -> None:
     """A simple polygon, convex or not: filled piece by piece, then outlined once."""
     for piece in polygon.convex_pieces(tuple(outline)):
         shapes.append(create_polygon(list(piece), fill))
-    shapes.append(create_line_loop(list(outline), edge, edge_width))
+    if edge is not None:
+        shapes.append(create_line_loop(list(outline), edge, edge_width))
+
+
+def _region(outline: Sequence[polygon.Vec]) -> Region:
+    xs, ys = zip(*outline)
+    return Region(tuple(outline), (min(xs), min(ys), max(xs), max(ys)))
+
+
+def _grid_points(region: Region, step: float, offset: float = 0.0):
+    """Points of a world-aligned grid inside `region`: zones on neighbouring tiles continue one pattern."""
+    x0, y0, x1, y1 = region.aabb
+    x = math.floor(x0 / step) * step + step / 2 + offset
+    while x < x1:
+        y = math.floor(y0 / step) * step + step / 2
+        while y < y1:
+            if region.contains(x, y):
+                yield x, y
+            y += step
+        x += step
+
+
+def _edges_not_shared(outline: polygon.Outline, others: Sequence[polygon.Outline]) -> list[tuple[polygon.Vec, ...]]:
+    """The edges of `outline` that no other zone of the same surface shares: the zone's outer rim,
+    without seams between the tiles of one ice sheet or one slope."""
+
+    def key(a: polygon.Vec, b: polygon.Vec) -> tuple:
+        return tuple(sorted(((round(a[0], 3), round(a[1], 3)), (round(b[0], 3), round(b[1], 3)))))
+
+    shared = set()
+    for other in others:
+        if other is not outline:
+            shared |= {key(other[i], other[(i + 1) % len(other)]) for i in range(len(other))}
+    edges = [(outline[i], outline[(i + 1) % len(outline)]) for i in range(len(outline))]
+    return [edge for edge in edges if key(*edge) not in shared]
+
+
+def _texture(shapes: ShapeElementList, kind: str, region: Region, colour: RGBA, push, rng: random.Random) -> None:
+    """What makes a surface readable at a glance, beyond its colour."""
+    if kind == "sand":  # speckled
+        for x, y in _grid_points(region, 0.32):
+            px, py = x + rng.uniform(-0.14, 0.14), y + rng.uniform(-0.14, 0.14)
+            if region.contains(px, py):
+                grain = shade(colour, rng.choice((-0.28, -0.18, 0.3)))
+                size = rng.uniform(0.06, 0.11)
+                shapes.append(create_ellipse_filled(px, py, size, size, grain, num_segments=6))
+    elif kind == "water":  # ripples: short arcs in rows
+        ripple = shade(colour, 0.35)
+        for x, y in _grid_points(region, 1.1):
+            arc = [(x + 0.32 * math.cos(a), y - 0.1 + 0.14 * math.sin(a)) for a in (0.5, 1.05, 1.57, 2.1, 2.65)]
+            if all(region.contains(*p) for p in arc):
+                shapes.append(create_line_strip(arc, ripple, 0.05))
+    elif kind == "ice":  # a sheen: pale diagonal streaks
+        # White glints on a tinted sheet; on a nearly white one, bluish-grey glints (white would vanish).
+        streak = shade(colour, 0.75, alpha=200) if sum(colour[:3]) < 660 else (*shade(colour, -0.3)[:3], 220)
+        for x, y in _grid_points(region, 1.4):
+            length = rng.uniform(0.35, 0.7)
+            a, b = (x - length / 2, y - length / 2), (x + length / 2, y + length / 2)
+            if region.contains(*a) and region.contains(*b):
+                shapes.append(create_line(*a, *b, streak, 0.06))
+                c = (b[0] + 0.18, b[1] - 0.05)
+                d = (c[0] + length / 3, c[1] + length / 3)
+                if region.contains(*d):
+                    shapes.append(create_line(*c, *d, streak, 0.04))
+    elif kind == "slope":  # chevrons pointing downhill
+        length = math.hypot(*push) or 1.0
+        ux, uy = push[0] / length, push[1] / length
+        size = 0.28
+        for x, y in _grid_points(region, 1.2):
+            tip = (x + ux * size, y + uy * size)
+            left = (x - ux * size - uy * size, y - uy * size + ux * size)
+            right = (x - ux * size + uy * size, y - uy * size - ux * size)
+            shapes.append(create_line_strip([left, tip, right], colour, 0.09))
+
+
+ZONE_COLOURS = {"sand": "sand_zone", "water": "water", "ice": "ice", "slope": "slope"}
+SLOPE_TINT = 0.5  # a slope's floor: the green this far toward the slope colour, under chevrons in that colour
 
 
 class HoleArt:
-    """The static picture of a hole: floor, walls, obstacles, tee and cup, one batched draw call."""
+    """The static picture of a hole, one batched draw call; windmills are drawn moving on top."""
 
-    def __init__(self, layout: HoleLayout, theme: Theme) -> None:
+    def __init__(self, layout: HoleLayout, theme: Theme, ball_radius: float = 0.5) -> None:
         shapes: ShapeElementList = ShapeElementList()
+        rng = random.Random(TEXTURE_SEED)
         size = layout.tile_size
         for x0, y0, x1, y1 in layout.floor:
             colour = theme.rgba("green_alt" if (round(x0 / size) + round(y0 / size)) % 2 else "green")
             shapes.append(create_rectangle_filled((x0 + x1) / 2, (y0 + y1) / 2, x1 - x0 + 0.02, y1 - y0 + 0.02, colour))
+        # The tee: a mat the ball (even a star's tips) sits inside.
         tx, ty = layout.tee
-        shapes.append(create_rectangle_filled(tx, ty, 0.9, 0.9, theme.rgba("tee")))
-        shapes.append(create_rectangle_filled(tx, ty, 0.8, 0.8, theme.rgba("green")))
-        zone_colour = {"sand": "sand_zone", "water": "water", "ice": "ice", "slope": "slope"}
-        for kind, outline, push in sorted(layout.zones, key=lambda z: z[0] == "slope"):
-            colour = theme.rgba(zone_colour[kind])
-            if kind == "slope":
-                _slope_arrows(shapes, outline, push, colour)
-            else:
-                edge = tuple(max(0, c - 40) for c in colour[:3]) + (255,)
-                _filled(shapes, outline, colour, edge, 0.05)
+        mat = 2 * ball_radius + 0.3
+        shapes.append(create_rectangle_filled(tx, ty, mat + 0.1, mat + 0.1, theme.rgba("tee")))
+        shapes.append(create_rectangle_filled(tx, ty, mat, mat, theme.rgba("green")))
+        zones = sorted(layout.zones, key=lambda z: z[0] == "slope")
+        for kind, outline, push in zones:
+            colour = theme.rgba(ZONE_COLOURS[kind])
+            fill = mix(theme.rgba("green"), colour, SLOPE_TINT) if kind == "slope" else colour
+            _filled(shapes, outline, fill, None, 0.0)
+            _texture(shapes, kind, _region(outline), colour, push, rng)
+            same = [o for k, o, _ in layout.zones if k == kind]
+            rim = shade(colour, -0.35) if kind != "slope" else colour
+            for a, b in _edges_not_shared(outline, same):
+                shapes.append(create_line(*a, *b, rim, 0.06))
+        # The windmills' sweep: where a blade will pass.
+        for local, (px, py), _ in layout.windmills:
+            reach = 2 * polygon.bounding_radius(local)
+            shapes.append(create_ellipse_outline(px, py, reach, reach, shade(theme.rgba("windmill"), 0.0, 110), 0.05,
+                                                 num_segments=64))
+            shapes.append(create_ellipse_filled(px, py, reach, reach, shade(theme.rgba("windmill"), 0.0, 28),
+                                                num_segments=64))
         cx, cy = layout.cup
         cup_r = layout.cup_radius
         rim = 2 * cup_r + 0.12
@@ -63,12 +174,17 @@ class HoleArt:
             _filled(shapes, outline, theme.rgba("wall"), theme.rgba("wall_edge"), 0.06)
         for outline, _ in layout.obstacles:
             _filled(shapes, outline, theme.rgba("obstacle"), theme.rgba("obstacle_edge"), 0.06)
-        for outline, _, _ in layout.bumpers:
-            _filled(shapes, outline, theme.rgba("bumper"), theme.rgba("obstacle_edge"), 0.06)
+        for outline, _, _ in layout.bumpers:  # ringed: a bright band inside a dark rim
+            _filled(shapes, outline, theme.rgba("bumper"), shade(theme.rgba("bumper"), -0.55), 0.14)
+            inner = _inset(outline, 0.12)
+            if inner is not None:
+                shapes.append(create_line_loop(inner, shade(theme.rgba("bumper"), 0.6), 0.06))
         self.shapes = shapes
+        self.flag = FlagArt(layout.cup, cup_r, theme)
         self.bumper_outlines = [outline for outline, _, _ in layout.bumpers]
-        self.windmills = [BallArt(outline, theme, fill="windmill", edge="obstacle_edge")
+        self.windmills = [PolygonArt(outline, theme, fill="windmill", edge="obstacle_edge", marker=False)
                           for outline, _, _ in layout.windmills]
+        self.cup = layout.cup
         self.cup_radius = cup_r
 
     def draw(self, lit_bumpers: Sequence[bool] = (), windmill_poses: Sequence[tuple[float, float, float]] = (),
@@ -80,55 +196,94 @@ class HoleArt:
         for art, pose in zip(self.windmills, windmill_poses):
             art.draw(*pose)
 
-
-def _slope_arrows(shapes: ShapeElementList, outline, push, colour) -> None:
-    """A slope: a tint and a field of chevrons pointing downhill."""
-    from polygolf.engine.components.hazards import Region
-
-    xs, ys = zip(*outline)
-    region = Region(tuple(outline), (min(xs), min(ys), max(xs), max(ys)))
-    tint = (*colour[:3], 90)
-    for piece in polygon.convex_pieces(tuple(outline)):
-        shapes.append(create_polygon(list(piece), tint))
-    length = math.hypot(*push) or 1.0
-    ux, uy = push[0] / length, push[1] / length
-    size = 0.28
-    step = 1.2
-    x = min(xs) + step / 2
-    while x < max(xs):
-        y = min(ys) + step / 2
-        while y < max(ys):
-            if region.contains(x, y):
-                tip = (x + ux * size, y + uy * size)
-                left = (x - ux * size - uy * size, y - uy * size + ux * size)
-                right = (x - ux * size + uy * size, y - uy * size - ux * size)
-                shapes.append(create_line_strip([left, tip, right], colour, 0.08))
-            y += step
-        x += step
+    def draw_flag(self) -> None:
+        self.flag.shapes.draw()
 
 
-class BallArt:
+def _inset(outline: polygon.Outline, by: float) -> list[polygon.Vec] | None:
+    """The outline pulled toward its centroid by `by` metres (about its size), or None if too small."""
+    cx = sum(x for x, _ in outline) / len(outline)
+    cy = sum(y for _, y in outline) / len(outline)
+    reach = max(math.hypot(x - cx, y - cy) for x, y in outline)
+    if reach <= 2 * by:
+        return None
+    k = (reach - by) / reach
+    return [(cx + (x - cx) * k, cy + (y - cy) * k) for x, y in outline]
+
+
+class FlagArt:
+    """The pin: a pole from the cup's rim and a pennant, so the target reads from across the hole."""
+
+    def __init__(self, cup: polygon.Vec, cup_radius: float, theme: Theme) -> None:
+        x, y = cup[0] + cup_radius * 0.7, cup[1] + cup_radius * 0.7
+        top = y + 1.6
+        self.shapes: ShapeElementList = ShapeElementList()
+        self.shapes.append(create_line(x + 0.05, y - 0.05, x + 0.05, top - 0.05, SHADOW, 0.07))
+        self.shapes.append(create_line(x, y, x, top, theme.rgba("cup_rim"), 0.07))
+        self.shapes.append(create_polygon([(x, top), (x, top - 0.55), (x + 0.85, top - 0.3)], theme.rgba("flag")))
+        self.shapes.append(create_line_loop([(x, top), (x, top - 0.55), (x + 0.85, top - 0.3)],
+                                            shade(theme.rgba("flag"), -0.5), 0.03))
+
+
+class PolygonArt:
     """A moving polygon (the ball, a windmill), built once in its own frame and moved and turned each
-    frame."""
+    frame; the ball also gets a shadow and a marker that shows its spin."""
 
     def __init__(self, outline: Sequence[polygon.Vec], theme: Theme, scale: float = 1.0, fill: str = "ball",
-                 edge: str = "ball_edge") -> None:
+                 edge: str = "ball_edge", marker: bool = True, colour: RGBA | None = None) -> None:
         local = [(x * scale, y * scale) for x, y in outline]
+        self.outline = local
+        self.fill, self.edge = colour or theme.rgba(fill), theme.rgba(edge)
         self.shapes: ShapeElementList = ShapeElementList()
-        _filled(self.shapes, local, theme.rgba(fill), theme.rgba(edge), 0.05 * max(scale, 1.0))
-        # A dot near the first vertex, so spin shows even on round-ish shapes.
-        x, y = local[0]
-        dot = 0.14 * polygon.bounding_radius(local)
-        self.shapes.append(create_ellipse_filled(0.62 * x, 0.62 * y, dot, dot, theme.rgba("ball_edge")))
+        _filled(self.shapes, local, self.fill, self.edge, 0.05 * max(scale, 1.0))
+        if marker:
+            # A dot toward the first vertex, inside even a thin star: it shows the spin on any shape.
+            inner = min(math.hypot(x, y) for x, y in local)
+            x, y = local[0]
+            reach = math.hypot(x, y) or 1.0
+            dot = 0.55 * inner
+            dx, dy = x / reach * 0.5 * inner, y / reach * 0.5 * inner
+            self.shapes.append(create_ellipse_filled(dx, dy, dot, dot, self.edge, num_segments=20))
+            self.shapes.append(create_ellipse_filled(dx, dy, 0.45 * dot, 0.45 * dot, shade(self.fill, 0.7),
+                                                     num_segments=16))
+        self.shadow: ShapeElementList = ShapeElementList()
+        _filled(self.shadow, local, SHADOW, None, 0.0)
 
-    def draw(self, x: float, y: float, angle: float) -> None:
-        self.shapes.position = (x, y)
-        self.shapes.angle = -math.degrees(angle)  # shape lists turn clockwise
-        self.shapes.draw()
+    def draw(self, x: float, y: float, angle: float, shadow: bool = False) -> None:
+        lists = (self.shadow, self.shapes) if shadow else (self.shapes,)
+        for shapes, (ox, oy) in zip(lists, (SHADOW_OFFSET, (0.0, 0.0)) if shadow else ((0.0, 0.0),)):
+            shapes.position = (x + ox, y + oy)
+            shapes.angle = -math.degrees(angle)  # shape lists turn clockwise
+            shapes.draw()
+
+    def draw_scaled(self, x: float, y: float, angle: float, scale: float) -> None:
+        """Immediate-mode, for the short moment the ball shrinks into the cup."""
+        c, s = math.cos(angle) * scale, math.sin(angle) * scale
+        points = [(x + c * px - s * py, y + s * px + c * py) for px, py in self.outline]
+        arcade.draw_polygon_filled(points, self.fill)
+        arcade.draw_polygon_outline(points, self.edge, 0.04)
 
 
-def draw_arrow(origin: polygon.Vec, tip: polygon.Vec, theme: Theme) -> float:
-    """The aiming arrow from where the ball was grabbed to the pointer, coloured by power.
+
+def draw_trail(points: Sequence[polygon.Vec], colour: RGBA, width: float) -> None:
+    """The ball's recent path, fading toward its oldest point."""
+    count = len(points)
+    for i in range(1, count):
+        alpha = round(150 * i / count)
+        arcade.draw_line(*points[i - 1], *points[i], (*colour[:3], alpha), width * i / count)
+
+
+def power_colour(theme: Theme, fraction: float) -> RGBA:
+    """The arrow's colour at `fraction` of full power: the theme's ramp from `arrow` to `arrow_strong`,
+    chosen light to dark (or blue to orange) so it reads without red-green vision."""
+    weak, strong = theme.rgba("arrow"), theme.rgba("arrow_strong")
+    return tuple(round(a + (b - a) * fraction) for a, b in zip(weak, strong))  # type: ignore[return-value]
+
+
+def draw_arrow(origin: polygon.Vec, tip: polygon.Vec, theme: Theme, centre: polygon.Vec | None = None,
+               spin: float = 0.0, ball_radius: float = 0.5) -> float:
+    """The aiming arrow from where the ball was grabbed to the pointer: longer, wider and darker with
+    power; around the ball, an arc whose length and direction show the spin the grab point gives.
     Returns the power fraction (1.0 = the strongest shot)."""
     arrow = (tip[0] - origin[0], tip[1] - origin[1])
     length = math.hypot(*arrow)
@@ -138,46 +293,74 @@ def draw_arrow(origin: polygon.Vec, tip: polygon.Vec, theme: Theme) -> float:
     ux, uy = arrow[0] / length, arrow[1] / length
     shown = clamp_arrow(arrow) or arrow
     end = (origin[0] + shown[0], origin[1] + shown[1])
-    weak, strong = theme.rgba("arrow"), theme.rgba("arrow_strong")
-    colour = tuple(round(a + (b - a) * fraction) for a, b in zip(weak, strong))
-    arcade.draw_line(origin[0], origin[1], end[0], end[1], colour, 0.12)
-    head = 0.45
+    colour = power_colour(theme, fraction)
+    width = 0.08 + 0.16 * fraction
+    outline = shade(colour, -0.6) if sum(colour[:3]) > 380 else shade(colour, 0.6)
+    head = 0.35 + 0.25 * fraction
+    base = (end[0] - ux * head * 0.8, end[1] - uy * head * 0.8)  # the shaft stops inside the head
+    arcade.draw_line(origin[0], origin[1], base[0], base[1], outline, width + 0.06)
+    arcade.draw_line(origin[0], origin[1], base[0], base[1], colour, width)
     left = (end[0] - ux * head - uy * head * 0.6, end[1] - uy * head + ux * head * 0.6)
     right = (end[0] - ux * head + uy * head * 0.6, end[1] - uy * head - ux * head * 0.6)
     arcade.draw_polygon_filled([end, left, right], colour)
+    arcade.draw_polygon_outline([end, left, right], outline, 0.03)
+    if centre is not None and abs(spin) > 0.05 * MAX_SHOT_SPIN:
+        draw_spin(centre, spin, ball_radius, colour, outline)
     return fraction
 
 
-def fit_camera(camera: arcade.Camera2D, bounds: tuple[float, float, float, float], width: int, height: int,
-               hud: int = HUD_HEIGHT) -> None:
-    """Zoom and centre the camera so the hole fills the window below the HUD bar."""
+def draw_spin(centre: polygon.Vec, spin: float, ball_radius: float, colour: RGBA, outline: RGBA) -> None:
+    """An arc around the ball, up to 300° at the strongest spin, with a head in the spin's direction."""
+    sweep = 300.0 * min(1.0, abs(spin) / MAX_SHOT_SPIN)
+    radius = ball_radius + 0.25
+    start = 90.0
+    end = start + sweep if spin > 0 else start - sweep
+    low, high = min(start, end), max(start, end)
+    arcade.draw_arc_outline(centre[0], centre[1], 2 * radius, 2 * radius, outline, low, high, 0.16, num_segments=64)
+    arcade.draw_arc_outline(centre[0], centre[1], 2 * radius, 2 * radius, colour, low, high, 0.1, num_segments=64)
+    a = math.radians(end)
+    px, py = centre[0] + radius * math.cos(a), centre[1] + radius * math.sin(a)
+    tx, ty = -math.sin(a) * (1 if spin > 0 else -1), math.cos(a) * (1 if spin > 0 else -1)  # along the turn
+    nx, ny = math.cos(a), math.sin(a)
+    head = [(px + tx * 0.42, py + ty * 0.42), (px - tx * 0.06 + nx * 0.14, py - ty * 0.06 + ny * 0.14),
+            (px - tx * 0.06 - nx * 0.14, py - ty * 0.06 - ny * 0.14)]
+    arcade.draw_polygon_filled(head, colour)
+    arcade.draw_polygon_outline(head, outline, 0.03)
+
+
+def fit_zoom(bounds: tuple[float, float, float, float], width: float, height: float) -> float:
+    """Pixels per metre that fit the hole, with its margin, in a `width` x `height` area."""
     x0, y0, x1, y1 = bounds
-    w, h = x1 - x0 + 2 * MARGIN, y1 - y0 + 2 * MARGIN
-    usable = max(1, height - hud)
-    zoom = min(width / w, usable / h)
+    return min(width / (x1 - x0 + 2 * MARGIN), max(1.0, height) / (y1 - y0 + 2 * MARGIN))
+
+
+def fit_camera(camera: arcade.Camera2D, bounds: tuple[float, float, float, float], width: int, height: int,
+               hud: int = HUD_HEIGHT, left: int = 0, zoom: float = 1.0,
+               pan: tuple[float, float] = (0.0, 0.0)) -> None:
+    """Zoom and centre the camera so the hole fills the window below the HUD bar and right of a `left`
+    panel; `zoom` (x the fit) and `pan` (metres) are the player's own view on top."""
+    x0, y0, x1, y1 = bounds
+    fitted = fit_zoom(bounds, width - left, height - hud)
     camera.match_window()
-    camera.zoom = zoom
-    # Centre the hole in the area under the HUD.
-    camera.position = ((x0 + x1) / 2, (y0 + y1) / 2 + hud / 2 / zoom)
+    camera.zoom = fitted * zoom
+    # Centre the hole in the area under the HUD and right of the panel.
+    camera.position = ((x0 + x1) / 2 - left / 2 / camera.zoom + pan[0],
+                       (y0 + y1) / 2 + hud / 2 / camera.zoom + pan[1])
 
 
 PLAYER_COLOURS = (None, (79, 195, 247, 255), (239, 83, 80, 255), (186, 104, 200, 255))  # seat 1: the theme's
 
 
-class PlayerBallArt(BallArt):
+class PlayerBallArt(PolygonArt):
     """A player's ball: seat 1 in the theme's ball colour, the others in their own colour, so everyone
     on the green can tell whose ball is whose."""
 
     def __init__(self, outline: Sequence[polygon.Vec], theme: Theme, seat: int) -> None:
-        super().__init__(outline, theme)
-        self.colour = PLAYER_COLOURS[seat % len(PLAYER_COLOURS)] or theme.rgba("ball")
-        if seat % len(PLAYER_COLOURS):
-            local = list(outline)
-            self.shapes = ShapeElementList()
-            _filled(self.shapes, local, self.colour, theme.rgba("ball_edge"), 0.05)
-            x, y = local[0]
-            dot = 0.14 * polygon.bounding_radius(local)
-            self.shapes.append(create_ellipse_filled(0.62 * x, 0.62 * y, dot, dot, theme.rgba("ball_edge")))
+        super().__init__(outline, theme, colour=PLAYER_COLOURS[seat % len(PLAYER_COLOURS)])
+
+    @property
+    def colour(self) -> RGBA:
+        return self.fill
 
 
 def draw_turn_ring(x: float, y: float, radius: float, colour) -> None:

@@ -15,6 +15,7 @@ from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.engine.physics.polygon import Vec
 from polygolf.game.record import BallEnd, HoleRecord, Input, RoundRecord, fingerprint
 from polygolf.game.shapes import CATALOGUE
+from polygolf.game.sound import ArcadePlayer, SoundBoard
 from polygolf.game.store import Best, Store
 from polygolf.game.theme import Theme, load_themes
 
@@ -361,11 +362,11 @@ class Game:
     round: Round | None = None
     guide_seen: bool = False
     players: list[str] = field(default_factory=lambda: default_names(1))
-    volume: float = 1.0
     problems: list[str] = field(default_factory=list)  # content that could not be read, for the menu
     store: Store | None = None
     session: RoundPlay | None = None
     record_rounds: bool = True  # False: practice (a hole file being edited): nothing saved
+    sound: SoundBoard = field(default_factory=lambda: SoundBoard(ArcadePlayer()))
 
     @classmethod
     def load(cls, store: Store | None = None) -> Game:
@@ -383,7 +384,7 @@ class Game:
     def settings(self) -> dict[str, object]:
         return {"theme": self.theme.name, "shape": {"label": self.shape_label, "spec": self.shape.model_dump(
             mode="json", exclude_none=True)}, "course": self.course.id if self.course else None,
-            "players": self.players, "volume": self.volume, "guide_seen": self.guide_seen}
+            "players": self.players, "volume": self.sound.volume, "guide_seen": self.guide_seen}
 
     def apply_settings(self, saved: dict[str, object]) -> None:
         """Take what was saved; a value that no longer fits (a theme or course gone) is left at its default."""
@@ -405,7 +406,7 @@ class Game:
             self.players = [n.strip()[:20] for n in names]
         volume = saved.get("volume")
         if isinstance(volume, int | float) and 0.0 <= volume <= 1.0:
-            self.volume = float(volume)
+            self.sound.volume = float(volume)  # the sound board's volume is the one setting
         self.guide_seen = saved.get("guide_seen") is True
 
     def save_settings(self) -> None:

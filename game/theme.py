@@ -23,6 +23,7 @@ class Theme(Strict_):
     obstacle_edge: Colour
     cup: Colour
     cup_rim: Colour
+    flag: Colour  # the pennant on the pin
     tee: Colour
     ball: Colour
     ball_edge: Colour
@@ -56,9 +57,10 @@ def load_theme(path: str | Path) -> Theme:
 FALLBACK = Theme(
     name="Fallback", background="#202020", green="#3c7a3c", green_alt="#377037", wall="#8a8a8a",
     wall_edge="#404040", obstacle="#9a9a9a", obstacle_edge="#404040", cup="#000000", cup_rim="#ffffff",
-    tee="#ffffff", ball="#ffd640", ball_edge="#202020", arrow="#ffffff", arrow_strong="#ff8000", text="#ffffff",
-    panel="#303030", button="#505050", button_hover="#707070", button_text="#ffffff", sand_zone="#d8c080",
-    water="#3060d0", ice="#c0e8ff", slope="#e0e0a0", bumper="#e04080", bumper_lit="#ff90c0", windmill="#c06020",
+    flag="#ff8000", tee="#ffffff", ball="#ffd640", ball_edge="#202020", arrow="#ffffff", arrow_strong="#ff8000",
+    text="#ffffff", panel="#303030", button="#505050", button_hover="#707070", button_text="#ffffff",
+    sand_zone="#d8c080", water="#3060d0", ice="#c0e8ff", slope="#e0e0a0", bumper="#e04080", bumper_lit="#ff90c0",
+    windmill="#c06020",
 )
 
 

@@ -152,7 +152,7 @@ def test_hole_world_holds_only_what_the_hole_needs(library, courses):
     with_hole = HolePlay(straight, PENTAGON)
     try:
         assert with_hole.sim.system_names == ["shot", "integrate", "spin", "drag", "ccd", "broadphase", "narrowphase",
-                                              "resolve", "restitution", "cup", "scoring"]
+                                              "resolve", "impacts", "restitution", "cup", "scoring"]
         assert with_hole.sim.processors[7].friction is True
     finally:
         with_hole.close()

@@ -137,6 +137,27 @@ def test_bumper_returns_the_ball_faster_by_its_kick(world):
     assert esper.get_component(Bumper)[0][1].lit == 0.0  # the light went out after the hit
 
 
+@pytest.mark.parametrize("bumper", [False, True])
+def test_impacts_stage_reports_each_hit_once_with_its_approach_speed(world, bumper):
+    """A wall (or bumper) struck at 2 m/s and then at 6 m/s: one impact each, of that speed and kind."""
+    extra = (Bumper(1.0),) if bumper else ()
+    wall = (((-2.0, -3.0), (0.0, -3.0), (0.0, 3.0), (-2.0, 3.0)), Material(1.0, 0.0), extra)
+    effects = {"spin", "restitution", "ccd", "impacts"} | ({"bumper"} if bumper else set())
+    heard = []
+    for speed in (2.0, 6.0):
+        esper.switch_world(f"impact-at-{speed}")  # each throw alone (the fixture deletes these worlds)
+        ctx, body = mini_world(effects, [wall], ball_at=(1.0, 0.0), ball_v=(-speed, 0.0))
+        body.angle = math.pi / 4  # face-on: two points, one impact
+        pipeline(ctx, effects, walls=True)
+        run(0.5, ctx)
+        _, impacts = ctx.events.drain()
+        assert len(impacts) == 1, impacts
+        heard.append(impacts[0])
+    assert [i.kind for i in heard] == ["bumper" if bumper else "wall"] * 2
+    assert [i.speed for i in heard] == pytest.approx([2.0, 6.0], rel=0.02)
+    assert heard[0].x == pytest.approx(0.0, abs=0.01)  # on the wall's face
+
+
 def test_windmill_contact_reverses_the_relative_normal_velocity(world):
     """A ball at rest struck by a turning blade: after the impact the relative normal velocity at the
     contact point is -e times what it was (the blade is kinematic: infinite mass)."""
@@ -190,10 +211,10 @@ def test_the_hazard_course_uses_every_hazard(courses):
 
 
 def test_every_hole_holds_exactly_the_systems_it_needs(courses):
-    core = ["shot", "integrate", "spin", "drag", "ccd", "broadphase", "narrowphase", "resolve", "restitution",
-            "cup", "scoring"]
+    core = ["shot", "integrate", "spin", "drag", "ccd", "broadphase", "narrowphase", "resolve", "impacts",
+            "restitution", "cup", "scoring"]
     order = ["shot", "launch", "windmill", "integrate", "spin", "slope", "sand", "ice", "drag", "ccd", "broadphase",
-             "narrowphase", "resolve", "restitution", "bumper", "water", "cup", "scoring"]
+             "narrowphase", "resolve", "impacts", "restitution", "bumper", "water", "cup", "scoring"]
     for course in courses:
         for hole in course.playable:
             world = HolePlay(hole, ShapeSpec(regular=5, radius=1.0))

@@ -9,6 +9,7 @@ import zipfile
 from pathlib import Path
 
 import polygolf
+from polygolf.game.sound import SOUND_NAMES
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -31,6 +32,10 @@ def test_the_wheel_holds_one_import_package_with_its_content(tmp_path):
     shipped = {n.removeprefix("polygolf/") for n in names if n.endswith(".yaml")}
     source = {str(p.relative_to(ROOT)) for p in (ROOT / "content").rglob("*.yaml")}
     assert shipped == source
+    sounds = {n.removeprefix("polygolf/") for n in names if n.startswith("polygolf/game/sounds/")}
+    assert sounds == {f"game/sounds/{name}.wav" for name in SOUND_NAMES} | {"game/sounds/LICENSE.md"}
+    for name in SOUND_NAMES:
+        assert len(zipfile.ZipFile(wheel).read(f"polygolf/game/sounds/{name}.wav")) < 50_000
     metadata = zipfile.ZipFile(wheel).read(wheel.name.split("-py3")[0] + ".dist-info/METADATA").decode()
     assert "License-Expression: MIT" in metadata
     requires = [line for line in metadata.splitlines() if line.startswith("Requires-Dist:")]

@@ -4,6 +4,7 @@ pixels, and a whole 9-hole round played by scripted shots through the mouse."""
 
 from __future__ import annotations
 
+import math
 import os
 from pathlib import Path
 
@@ -123,6 +124,10 @@ def test_every_screen_draws_something(window, game, shots_dir):
     pixels = snapshot(window, shots_dir, "play-aiming")
     assert_not_blank(pixels, "play")
     key(window, arcade.key.ESCAPE)  # cancels the shot, does not pause
+    aim(window, play, (ball.x, ball.y + 0.3), (4.0, 0.8), release=False)  # grabbed off-centre: spin shown
+    assert play.world.shot_spin(play.grab, (play.tip[0] - play.grab[0], play.tip[1] - play.grab[1])) < -1.0
+    assert_not_blank(snapshot(window, shots_dir, "play-aiming-spin"), "play")
+    key(window, arcade.key.ESCAPE)
     assert not play.aiming and window.current_view is play
     key(window, arcade.key.ESCAPE)  # now pauses
     assert isinstance(window.current_view, PauseView)
@@ -251,6 +256,12 @@ def test_f3_overlay_shows_each_systems_cost_and_keys_switch_the_preset(window, g
         frame(window)
     lines = play.overlay_lines()
     assert lines[0].startswith("preset balanced: 4 substeps x 8 iterations")
+    fps_line = next(line for line in lines if line.startswith("fps"))
+    assert float(fps_line.split()[1]) == pytest.approx(60.0) and "frame 16.7 ms" in fps_line
+    x0, y0, x1, y1 = play.world.layout.bounds
+    from polygolf.game.views.play import OVERLAY_WIDTH
+
+    assert play.camera.project((x0, y0))[0] >= OVERLAY_WIDTH  # the panel hides no part of the hole
     for name in play.world.system_names:
         line = next(line for line in lines if line.strip().startswith(name + " "))
         assert float(line.split()[-2]) >= 0.0
@@ -302,3 +313,161 @@ def test_a_watched_hole_file_reloads_on_save_and_keeps_the_ball(window, game, tm
         snapshot(window, shots_dir, "play-watch-broken")
     finally:
         watcher.close()
+
+
+def play_for(view: PlayView, seconds: float, fps: int) -> None:
+    for _ in range(round(seconds * fps)):
+        view.on_update(1 / fps)
+
+
+def test_the_ball_follows_the_same_path_at_20_and_144_fps(window, game):
+    """Physics steps whole fixed frames whatever the frame rate: the same shot, played for the same
+    real time at 20 and at 144 frames a second, leaves the ball in bit-identical states."""
+    states = []
+    for fps in (20, 144):
+        play = show(window, PlayView(game, game.start_round(), ScreenFlow(window, game)))
+        ball = play.world.ball
+        play.world.shoot((ball.x, ball.y + 0.1), (3.0, 1.5))
+        play_for(play, 1.5, fps)
+        states.append((play.clock.frames, ball.x, ball.y, ball.angle, ball.vx, ball.vy, ball.spin))
+        assert not ball.asleep  # still rolling: the comparison is mid-flight, not two balls at rest
+        play.close()
+    assert states[0] == states[1]
+    assert states[0][0] == 90  # 1.5 s of real time is 90 physics frames at either rate
+
+
+def test_a_slow_frame_rate_still_plays_in_real_time_and_draws_between_poses(window, game):
+    play = show(window, PlayView(game, game.start_round(), ScreenFlow(window, game)))
+    ball = play.world.ball
+    play.world.shoot((ball.x, ball.y), (3.0, 0.0))
+    play_for(play, 2.0, 35)
+    assert play.clock.frames == 120
+    drawn = play.ball_poses[play.world.turn].at(play.clock.alpha)
+    before, after = play.ball_poses[play.world.turn].previous, play.ball_poses[play.world.turn].current
+    assert min(before[0], after[0]) <= drawn[0] <= max(before[0], after[0])
+
+
+def hazard_points(layout):
+    """(kind, colour field, point inside) for every hazard of a hole, away from its edges."""
+    from polygolf.engine.components.hazards import Region
+
+    found = []
+    fields = {"sand": "sand_zone", "water": "water", "ice": "ice", "slope": "slope"}
+    for kind, outline, _ in layout.zones:
+        xs, ys = zip(*outline)
+        region = Region(tuple(outline), (min(xs), min(ys), max(xs), max(ys)))
+        inside = [(x, y) for x in np.linspace(min(xs), max(xs), 9)[1:-1] for y in np.linspace(min(ys), max(ys), 9)[1:-1]
+                  if all(region.contains(x + dx, y + dy) for dx in (-0.6, 0.6) for dy in (-0.6, 0.6))]
+        cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
+        found.append((kind, fields[kind], min(inside, key=lambda p: math.hypot(p[0] - cx, p[1] - cy)), 1.2))
+    for outline, _, _ in layout.bumpers:
+        centre = (sum(x for x, _ in outline) / len(outline), sum(y for _, y in outline) / len(outline))
+        found.append(("bumper", "bumper", centre, 0.25))
+    for _, pivot, _ in layout.windmills:
+        found.append(("windmill", "windmill", pivot, 0.2))
+    return found
+
+
+@pytest.mark.parametrize("theme_name", ["Grass", "Night", "Sand"])
+def test_every_hazard_is_drawn_in_its_own_colour_in_every_theme(window, game, shots_dir, theme_name):
+    """Each hazard's patch on screen holds its theme colour and hardly any green; slopes are a tinted
+    floor with chevrons in the slope colour."""
+    game.theme_index = [t.name for t in game.themes].index(theme_name)
+    game.course_index = [c.name for c in game.courses].index("Hazards")
+    theme = game.theme
+    seen = set()
+    for number in range(1, len(game.course.holes) + 1):
+        play = show(window, PlayView(game, game.start_round(number - 1), ScreenFlow(window, game)))
+        pixels = snapshot(window, shots_dir, f"hazards-{number}-{theme_name.lower()}")
+        height = pixels.shape[0]
+        for kind, field, (x, y), half in hazard_points(play.world.layout):
+            (sx0, sy0), (sx1, sy1) = (play.camera.project((x - half / 2, y - half / 2))[:2],
+                                      play.camera.project((x + half / 2, y + half / 2))[:2])
+            patch = pixels[height - int(sy1):height - int(sy0), int(sx0):int(sx1)].reshape(-1, 3)
+            near = {name: (np.abs(patch - theme.rgba(name)[:3]).sum(axis=1) < 30).mean()
+                    for name in ("green", "green_alt", field)}
+            assert near["green"] + near["green_alt"] < 0.05, (number, kind, near)
+            assert near[field] >= (0.03 if kind == "slope" else 0.5), (number, kind, near)
+            if kind == "slope":
+                floor = np.median(patch, axis=0)
+                assert np.abs(floor - theme.rgba("green")[:3]).sum() > 25, (number, floor)
+            seen.add(kind)
+        play.close()
+    assert seen == {"sand", "water", "ice", "slope", "bumper", "windmill"}
+
+
+def test_menu_clicks_and_the_volume_button_are_heard(window, game):
+    from polygolf.game.sound import SoundBoard
+
+    from .test_sound import RecordingPlayer
+
+    player = RecordingPlayer()
+    game.sound = SoundBoard(player, volume=0.5)
+    show(window, MenuView(game, ScreenFlow(window, game)))
+    click(window, "volume")
+    assert game.sound.volume == 0.75 and "75%" in window.current_view.buttons["volume"].text
+    click(window, "theme")
+    assert [name for name, _ in player.played] == ["click", "click"]
+    assert player.played[0][1] == pytest.approx(0.6 * 0.5)  # heard at the old volume, before it changed
+    key(window, arcade.key.M)
+    click(window, "shape")
+    assert len(player.played) == 2 and game.sound.muted
+
+
+def test_zoom_keeps_the_point_under_the_pointer_and_right_drag_pans(window, game):
+    play = show(window, PlayView(game, game.start_round(), ScreenFlow(window, game)))
+    fitted = play.camera.zoom
+    target = play.world.layout.cup
+    sx, sy = play.camera.project(target)[:2]
+    send(window, "on_mouse_scroll", int(sx), int(sy), 0, 3)
+    assert play.camera.zoom == pytest.approx(fitted * 1.15 ** 3)
+    after = play.to_world(int(sx), int(sy))
+    assert math.dist(after, target) < 2 / play.camera.zoom  # within a pixel or two
+    before = play.to_world(640, 360)
+    send(window, "on_mouse_press", 640, 360, arcade.MOUSE_BUTTON_RIGHT, 0)
+    send(window, "on_mouse_drag", 700, 360, 60, 0, arcade.MOUSE_BUTTON_RIGHT, 0)
+    moved = play.to_world(640, 360)
+    assert moved[0] == pytest.approx(before[0] - 60 / play.camera.zoom)
+    key(window, arcade.key.KEY_0)
+    assert play.camera.zoom == pytest.approx(fitted)
+
+
+def test_the_ball_slides_into_the_cup_from_where_it_dropped(window, game, shots_dir):
+    play = show(window, PlayView(game, game.start_round(), ScreenFlow(window, game)))
+    world = play.world
+    cx, cy = world.layout.cup
+    world.place_ball(cx - 1.2, cy)
+    play.ball_poses[0] = type(play.ball_poses[0])(play.ball_pose(0))
+    world.shoot((cx - 1.2, cy), (0.45, 0.0))
+    for _ in range(80):
+        play.on_update(1 / 20)  # three physics frames an update: the drop is still seen from where it began
+        if world.state.holed:
+            break
+    assert world.state.holed and play.drop_from is not None
+    assert math.dist(play.drop_from[:2], (cx, cy)) > 0.05  # it was drawn from where it was, not the centre
+    assert_not_blank(snapshot(window, shots_dir, "play-holed-banner"), "holed")
+
+
+def test_a_fast_ball_over_the_cup_wobbles_and_rolls_on(window, game):
+    play = show(window, PlayView(game, game.start_round(), ScreenFlow(window, game)))
+    world = play.world
+    cx, cy = world.layout.cup
+    world.place_ball(cx - 2.0, cy)
+    world.shoot((cx - 2.0, cy), (2.4, 0.0))  # 12 m/s: far too fast to drop
+    wobbled, furthest = False, world.ball.x
+    for _ in range(40):
+        frame(window, draw=True)
+        wobbled |= play.over_cup_time > 0
+        furthest = max(furthest, world.ball.x)
+    assert wobbled and not world.state.holed and furthest > cx + 0.8  # over the cup and past it
+
+
+def test_f11_switches_fullscreen_and_back(window, game):
+    show(window, PlayView(game, game.start_round(), ScreenFlow(window, game)))
+    before = window.fullscreen
+    key(window, arcade.key.F11)
+    assert window.fullscreen is not before
+    key(window, arcade.key.F11)
+    assert window.fullscreen is before
+    window.set_size(1280, 720)
+    send(window, "on_resize", 1280, 720)

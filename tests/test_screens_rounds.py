@@ -185,7 +185,8 @@ def test_a_database_broken_between_launches_costs_one_line_and_the_round_is_kept
     store.path.write_bytes(b"SQLite format 3\x00" + b"\xde\xad\xbe\xef" * 500)  # a header, then garbage
     capsys.readouterr()
     start_sandbox_round(window, 1)
-    err = capsys.readouterr().err.strip().splitlines()
+    # One line for the database (a machine without an audio device also says so once: not counted).
+    err = [line for line in capsys.readouterr().err.strip().splitlines() if "no sound" not in line]
     assert len(err) == 1 and "damaged" in err[0] and "polygolf.db.corrupt-" in err[0]
     results = play_to(window, lambda v: isinstance(v, ResultsView))
     assert "damaged" in results.warning.text

@@ -25,6 +25,7 @@ from polygolf.engine.systems.cup import CupProcessor
 from polygolf.engine.systems.drag import DragProcessor
 from polygolf.engine.systems.gravity import GravityProcessor
 from polygolf.engine.systems.ice import IceProcessor
+from polygolf.engine.systems.impacts import ImpactsProcessor
 from polygolf.engine.systems.integrate import IntegrateProcessor
 from polygolf.engine.systems.launch import LaunchProcessor
 from polygolf.engine.systems.narrowphase import NarrowphaseProcessor
@@ -82,6 +83,7 @@ STAGES: tuple[Stage, ...] = (
     Stage("narrowphase", NarrowphaseProcessor, needs=_touchable,
           why="separating axes and clipping on the broadphase's candidates"),
     Stage("resolve", ResolveProcessor, needs=_touchable, why="sequential impulses on contacts"),
+    Stage("impacts", ImpactsProcessor, "impacts", needs=_touchable),
     Stage("restitution", RestitutionProcessor, "restitution", needs=_touchable),
     Stage("bumper", BumperProcessor, "bumper", needs=_touchable),
     Stage("water", WaterProcessor, "water"),

@@ -3,6 +3,7 @@ by who writes it, so a processor's constructor shows what it reads and writes.""
 
 from __future__ import annotations
 
+from collections import deque
 from dataclasses import dataclass, field
 
 from polygolf.engine.physics.body import Body
@@ -68,16 +69,47 @@ class Stats:
     cold_restarts: int = 0  # substeps whose warm start would have added energy
 
 
+HEARD_LIMIT = 256  # events and impacts kept for a listener that has not drained them (a bound, not a budget)
+
+
+@dataclass(frozen=True, slots=True)
+class Impact:
+    """Something struck a body hard enough to hear: `kind` is "shot" (the club), "wall", "bumper" or
+    "body" (another body, a windmill); `speed` is the approach speed along the normal, m/s (a shot:
+    the speed it gave the ball); (x, y) where."""
+
+    kind: str
+    speed: float
+    x: float
+    y: float
+
+
 @dataclass(slots=True)
 class Events:
     """Golf events of this substep, in the order they happened, each naming the ball it happened to:
     ("shot", ball, 1), ("holed", ball, 1), ("penalty", ball, strokes). The scoring stage, last in the
-    table, reads them and clears the list; a ball's own `HoleState` keeps its score (one per player)."""
+    table, reads `fired` and clears it; a ball's own `HoleState` keeps its score (one per player).
+
+    A listener outside the world (the front end's sound and drawing) reads `heard` and `impacts`
+    instead: everything since it last called `drain()`, bounded so nobody has to listen."""
 
     fired: list[tuple[str, int, int]] = field(default_factory=list)
+    heard: deque[tuple[str, int, int]] = field(default_factory=lambda: deque(maxlen=HEARD_LIMIT))
+    impacts: deque[Impact] = field(default_factory=lambda: deque(maxlen=HEARD_LIMIT))
 
     def emit(self, kind: str, ball: int, amount: int = 1) -> None:
         self.fired.append((kind, ball, amount))
+        self.heard.append((kind, ball, amount))
+
+    def strike(self, kind: str, speed: float, x: float, y: float) -> None:
+        self.impacts.append(Impact(kind, speed, x, y))
+
+    def drain(self) -> tuple[list[tuple[str, int, int]], list[Impact]]:
+        """The golf events and impacts since the last drain, oldest first."""
+        heard, impacts = list(self.heard), list(self.impacts)
+        self.heard.clear()
+        self.impacts.clear()
+        return heard, impacts
 
 
 @dataclass(slots=True)

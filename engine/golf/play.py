@@ -10,13 +10,14 @@ import esper
 from polygolf.engine.assembly.assemble import assemble, resolve_knobs
 from polygolf.engine.assembly.simulation import Simulation
 from polygolf.engine.components import Ball, Body, Bumper, Collider, HoleState, ShotInput, Windmill
+from polygolf.engine.components.resources import Impact
 from polygolf.engine.golf.holes import Hole
 from polygolf.engine.golf.layout import HoleLayout
 from polygolf.engine.golf.world import hole_spec
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.physics.polygon import Outline
 from polygolf.engine.physics.presets import Knobs
-from polygolf.engine.physics.shot import clamp_arrow
+from polygolf.engine.physics.shot import clamp_arrow, shot_velocity
 
 RESTART_PENALTY = 1  # strokes a restart adds: the strokes already taken stay too
 
@@ -109,6 +110,11 @@ class HolePlay:
     def contact_count(self) -> int:
         return self.sim.res.contacts.count
 
+    def drain_events(self) -> tuple[list[tuple[str, int, int]], list[Impact]]:
+        """What happened since the last call, for the front end's sound and drawing: golf events
+        ("shot", "holed", "penalty") and impacts (`components.resources.Impact`), oldest first."""
+        return self.sim.res.events.drain()
+
     def system_seconds(self) -> dict[str, float]:
         """Seconds each stage has spent in profiled steps so far."""
         return dict(self.sim.metrics.system_seconds)
@@ -123,6 +129,15 @@ class HolePlay:
             return False
         self.players[self.turn].shot.request(origin, vector)
         return True
+
+    def shot_spin(self, origin: tuple[float, float], arrow: tuple[float, float]) -> float:
+        """The spin (rad/s) this shot would give the ball, for the aiming arrow to show."""
+        ball = self.ball
+        vector = clamp_arrow(arrow)
+        if vector is None:
+            return 0.0
+        return shot_velocity(ball.mass, ball.inertia, self.collider.radius, origin[0] - ball.x, origin[1] - ball.y,
+                             *vector, rotates=ball.inv_inertia > 0.0)[2]
 
     def place_ball(self, x: float, y: float) -> None:
         """Put the ball of the player whose turn it is at rest at (x, y) (where a hazard would put it

@@ -115,6 +115,7 @@ def hole_spec(hole: Hole, shape: ShapeSpec, players: int = 1) -> WorldSpec:
     if spec.launch is not None:
         content["launch"] = f"collision test: the ball is launched every {spec.launch.every:g} s"
     rules = {"shot": "the player shoots", "cup": "the ball can drop into the cup",
+             "impacts": "the player hears what the ball strikes",
              "scoring": f"par {spec.par}, picked up after {max_strokes} strokes"}
     return WorldSpec(name=f"hole-{hole.id}", bodies=balls, walls=walls, kinematic=windmills, entities=entities,
                      rules=rules, content_effects=content,

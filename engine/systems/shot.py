@@ -1,3 +1,5 @@
+import math
+
 import esper
 
 from polygolf.engine.components import Ball, Body, Collider, ShotInput
@@ -37,3 +39,4 @@ class ShotProcessor(esper.Processor):
             body.spin += dspin
             shot.accepted += 1
             self.events.emit("shot", ent)
+            self.events.strike("shot", math.hypot(dvx, dvy), body.x, body.y)

@@ -7,7 +7,7 @@ import arcade
 from arcade.gui import UIAnchorLayout, UIView
 
 from polygolf.game.session import Game, HoleResult, Round, golf_name, par_text, penalty_text, strokes_text
-from polygolf.game.views.navigation import Navigator
+from polygolf.game.views.navigation import Navigator, window_key
 from polygolf.game.views.widgets import themed_button, title
 
 
@@ -54,7 +54,7 @@ class BetweenView(UIView):
                                      bold=True)
         self.skipped = arcade.Text("\n".join(round_.skipped), 0, 0, theme.rgba("arrow_strong"), 12,
                                    anchor_x="center", anchor_y="top", multiline=True, width=1000, align="center")
-        button = themed_button(theme, "Next hole" if upcoming else "Scorecard", width=260)
+        button = themed_button(theme, "Next hole" if upcoming else "Scorecard", width=260, clicks=self.game.sound)
         button.on_click = self.on_continue  # type: ignore[method-assign]
         anchor = UIAnchorLayout()
         anchor.add(button, anchor_x="center_x", anchor_y="bottom", align_y=60)
@@ -64,6 +64,8 @@ class BetweenView(UIView):
         self.flow.next_hole()
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:
+        if window_key(self.window, self.game, symbol):
+            return
         if symbol in (arcade.key.ENTER, arcade.key.RETURN, arcade.key.SPACE):
             self.on_continue()
 

@@ -7,10 +7,10 @@ import arcade
 from arcade.gui import UIAnchorLayout, UIBoxLayout, UIView
 
 from polygolf.engine.golf.layout import ball_outline
-from polygolf.game.drawing import BallArt
+from polygolf.game.drawing import PolygonArt
 from polygolf.game.session import Game
 from polygolf.game.shapes import random_shape
-from polygolf.game.views.navigation import Navigator
+from polygolf.game.views.navigation import Navigator, window_key
 from polygolf.game.views.widgets import themed_button, title
 
 
@@ -31,7 +31,7 @@ class MenuView(UIView):
                                     anchor_x="center", anchor_y="center", italic=True)
         self.shape_caption = arcade.Text(game.shape_label, 0, 0, theme.rgba("text"), 18, anchor_x="center",
                                          anchor_y="center")
-        column = UIBoxLayout(vertical=True, space_between=10)
+        column = UIBoxLayout(vertical=True, space_between=6)  # ten buttons fit under the title at 720 px
         self.buttons = {}
         for key, text, action in (
             ("play", "Play", self.on_play),
@@ -41,17 +41,18 @@ class MenuView(UIView):
             ("course", f"Course: {game.course.name}" if game.course else "No course could be read", self.on_course),
             ("players", f"Players: {len(game.players)}", self.on_players),
             ("names", "Names: " + ", ".join(game.players), self.on_names),
+            ("volume", f"Sound: {self.volume_label}", self.on_volume),
             ("guide", "How to play", self.on_guide),
             ("quit", "Quit", self.on_quit),
         ):
-            button = themed_button(theme, text)
+            button = themed_button(theme, text, height=42, clicks=self.game.sound)
             button.on_click = action  # type: ignore[method-assign]
             column.add(button)
             self.buttons[key] = button
         anchor = UIAnchorLayout()
         anchor.add(column, anchor_x="center_x", anchor_y="center_y", align_x=-180, align_y=-40)
         self.ui.add(anchor)
-        self.ball_art = BallArt(ball_outline(game.shape, 1.0), theme, scale=1.0)
+        self.ball_art = PolygonArt(ball_outline(game.shape, 1.0), theme, scale=1.0)
         self.preview = arcade.Camera2D()
         # Content that could not be read is left out of the game and said here, not crashed on.
         shown = game.problems[:4] + ([f"... and {len(game.problems) - 4} more"] if len(game.problems) > 4 else [])
@@ -87,6 +88,15 @@ class MenuView(UIView):
     def on_names(self, _event=None) -> None:
         self.flow.names()
 
+    @property
+    def volume_label(self) -> str:
+        sound = self.game.sound
+        return "off" if sound.muted or sound.volume == 0 else f"{round(sound.volume * 100)}%"
+
+    def on_volume(self, _event=None) -> None:
+        self.game.sound.next_volume()
+        self.build()
+
     def on_guide(self, _event=None) -> None:
         self.flow.guide()
 
@@ -94,6 +104,8 @@ class MenuView(UIView):
         self.flow.quit()
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:
+        if window_key(self.window, self.game, symbol):
+            return
         if symbol in (arcade.key.ENTER, arcade.key.RETURN, arcade.key.SPACE):
             self.on_play()
         elif symbol == arcade.key.ESCAPE:

@@ -7,7 +7,7 @@ from typing import Protocol
 
 import arcade
 
-from polygolf.game.session import HoleResult
+from polygolf.game.session import Game, HoleResult
 
 
 class Navigator(Protocol):
@@ -41,3 +41,14 @@ class Navigator(Protocol):
 
     def quit(self) -> None:
         """Close the game."""
+
+
+def window_key(window: arcade.Window, game: Game, symbol: int) -> bool:
+    """The keys every screen shares: F11 fullscreen, M mute. True if `symbol` was one of them."""
+    if symbol == arcade.key.F11:
+        window.set_fullscreen(not window.fullscreen)
+        return True
+    if symbol == arcade.key.M:
+        game.sound.toggle_mute()
+        return True
+    return False

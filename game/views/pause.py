@@ -6,7 +6,7 @@ import arcade
 from arcade.gui import UIAnchorLayout, UIBoxLayout, UIView
 
 from polygolf.game.session import Game
-from polygolf.game.views.navigation import Navigator
+from polygolf.game.views.navigation import Navigator, window_key
 from polygolf.game.views.widgets import themed_button, title
 
 
@@ -21,7 +21,7 @@ class PauseView(UIView):
         column = UIBoxLayout(vertical=True, space_between=10)
         actions = (("Resume", self.on_resume), ("Restart hole", self.on_restart), ("Main menu", self.on_menu))
         for text, action in actions:
-            button = themed_button(theme, text, width=280)
+            button = themed_button(theme, text, width=280, clicks=self.game.sound)
             button.on_click = action  # type: ignore[method-assign]
             column.add(button)
         anchor = UIAnchorLayout()
@@ -39,6 +39,8 @@ class PauseView(UIView):
         self.flow.menu()
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:
+        if window_key(self.window, self.game, symbol):
+            return
         if symbol == arcade.key.ESCAPE:
             self.on_resume()
 

@@ -2,28 +2,57 @@
 
 Press on the ball and drag: the arrow shows direction and power, where you grabbed the ball sets the
 spin, release shoots, Esc cancels. R restarts the hole (back to the tee, a penalty stroke); L watches
-the last shot again; Esc (not aiming) pauses. F3 shows what each system costs a frame; 1, 2, 3 switch
-the preset (fast, balanced, accurate) live. The round's rules (turns, scores, recording) are the
-session's (`session.RoundPlay`); this screen turns the mouse into its shots and draws it.
+the last shot again; Esc (not aiming) pauses. The mouse wheel
+zooms about the pointer, a right-drag or the arrow keys pan, 0 fits the hole again. F3 shows the frame
+rate and what each system costs a frame, in a panel the hole is fitted beside; 1, 2, 3 switch the
+preset (fast, balanced, accurate) live. F11 (fullscreen) and M (mute) work on every screen.
+
+Time: the physics steps whole 1/60 s frames from a fixed-timestep accumulator (`game.timing`), so the
+ball rolls at real speed at any frame rate; the ball and windmills are drawn between their last two
+poses. Sound and the drop/splash animations follow the events the hole reports (`HolePlay.drain_events`).
+The round's rules (turns, scores, recording) are the session's (`session.RoundPlay`); this screen
+turns the mouse into its shots and draws it.
 """
 
 from __future__ import annotations
 
 import math
+import time
+from collections import deque
 
 import arcade
 
 from polygolf.engine.golf.layout import ball_fits
 from polygolf.engine.golf.play import HolePlay
-from polygolf.game.drawing import HUD_HEIGHT, HoleArt, PlayerBallArt, draw_arrow, draw_turn_ring, fit_camera
+from polygolf.game.drawing import (
+    HUD_HEIGHT,
+    HoleArt,
+    PlayerBallArt,
+    draw_arrow,
+    draw_trail,
+    draw_turn_ring,
+    fit_camera,
+    shade,
+)
 from polygolf.game.session import Game, Round, RoundPlay, penalty_text, strokes_text
-from polygolf.game.views.navigation import Navigator
+from polygolf.game.timing import FixedStep, Pose, Poses
+from polygolf.game.views.navigation import Navigator, window_key
 
 GRAB_SLACK = 1.25  # a press this many ball radii from the centre still grabs the ball
+GRAB_PIXELS = 18  # ... or this many pixels, when the ball is drawn small
 FINISH_PAUSE = 1.0  # seconds between the ball dropping and the next screen
 PRESET_KEYS = {arcade.key.KEY_1: "fast", arcade.key.KEY_2: "balanced", arcade.key.KEY_3: "accurate"}
-OVERLAY_LINES = 18
+OVERLAY_LINES = 24
+OVERLAY_WIDTH = 330  # pixels: the F3 panel on the left; the hole is fitted beside it
 SMOOTHING = 0.1  # weight of the newest frame in the overlay's running averages
+DROP_SECONDS = 0.35  # the ball slides from where it was to the cup's centre, shrinking
+LIP_WOBBLE = 0.07  # metres the drawn ball dips toward a cup it rolls over
+SPLASH_SECONDS = 0.6
+TRAIL_FRAMES = 14  # physics frames of path drawn behind a moving ball
+ZOOM_RANGE = (1.0, 6.0)  # times the fitted zoom
+ZOOM_STEP = 1.15  # per wheel notch
+PAN_KEYS = {arcade.key.LEFT: (-1, 0), arcade.key.RIGHT: (1, 0), arcade.key.UP: (0, 1), arcade.key.DOWN: (0, -1)}
+PAN_STEP = 0.15  # of the visible width per arrow-key press
 
 
 class PlayView(arcade.View):
@@ -45,9 +74,12 @@ class PlayView(arcade.View):
                                   multiline=True, width=900, align="center")
         self.banner_time = 0.0
         self.overlay = False
-        self.overlay_texts = [arcade.Text("", 0, 0, theme.rgba("text"), 12, font_name=("DejaVu Sans Mono", "monospace"))
+        self.overlay_texts = [arcade.Text("", 0, 0, theme.rgba("text"), 11, font_name=("DejaVu Sans Mono", "monospace"))
                               for _ in range(OVERLAY_LINES)]
         self.system_us: dict[str, float] = {}
+        self.frame_seconds: deque[float] = deque(maxlen=120)  # real time between updates, for F3
+        self.draw_ms = 0.0
+        self.clock = FixedStep()  # game time runs on across restarts and reloads
         self.world: HolePlay | None = None
         self.session = self.session_for(game, round_)
         self.start_hole()
@@ -68,13 +100,25 @@ class PlayView(arcade.View):
         self.world = session.hole if session.hole is not None and not session.hole_over else session.start_hole()
         if self.world is None:
             return
-        self.hole_art = HoleArt(self.world.layout, self.game.theme)
-        self.ball_arts = [PlayerBallArt(self.world.outline, self.game.theme, seat)
-                          for seat in range(len(self.world.players))]
+        theme = self.game.theme
+        self.hole_art = HoleArt(self.world.layout, theme, self.world.collider.radius)
+        self.ball_arts = [PlayerBallArt(self.world.outline, theme, seat) for seat in range(len(self.world.players))]
+        self.seat_of = {p.entity: seat for seat, p in enumerate(self.world.players)}
+        self.ball_poses = [Poses(self.ball_pose(seat)) for seat in range(len(self.world.players))]
+        self.windmill_poses = [Poses((w.x, w.y, w.angle)) for w in self.world.windmills]
+        self.trail: deque[tuple[float, float]] = deque(maxlen=TRAIL_FRAMES)
+        self.drop_from: Pose | None = None  # where the ball was when it dropped
+        self.drop_seat = -1  # whose ball it was
+        self.drop_time = 0.0
+        self.over_cup_time = 0.0
+        self.splashes: list[list[float]] = []  # [x, y, age]
         self.aiming = False
         self.grab = self.tip = (0.0, 0.0)
         self.finished_for = 0.0
         self.finish_text: arcade.Text | None = None
+        self.zoom = 1.0
+        self.pan = (0.0, 0.0)
+        self.world.drain_events()
         if self.round.skipped:
             self.show_banner("\n".join(self.round.skipped[-2:]))
         self.fit()
@@ -85,6 +129,9 @@ class PlayView(arcade.View):
         and a penalty stroke is added (no free retakes)."""
         if self.session.restart():
             self.aiming = False
+            seat = self.world.turn
+            self.ball_poses[seat] = Poses(self.ball_pose(seat))
+            self.trail.clear()
             who = self.turn_prefix()
             self.show_banner(f"{who}{'b' if who else 'B'}ack to the tee: +1 penalty stroke", 2.5)
 
@@ -96,24 +143,49 @@ class PlayView(arcade.View):
         if self.world is not None and where is not None and ball_fits(self.world.layout, *where,
                                                                       self.world.collider.radius):
             self.world.place_ball(*where)
+            self.ball_poses[self.world.turn] = Poses(self.ball_pose(self.world.turn))
         self.show_banner("Reloaded", 1.5)
 
     def show_banner(self, text: str, seconds: float = 6.0) -> None:
         self.banner.text = text
         self.banner_time = seconds
 
+    def ball_pose(self, seat: int) -> Pose:
+        ball = self.world.players[seat].body
+        return ball.x, ball.y, ball.angle
+
     # -- layout -----------------------------------------------------------------------------------
 
     def fit(self) -> None:
+        """The camera: the hole fitted below the HUD (beside the F3 panel when it shows), then the
+        player's zoom and pan."""
         if self.world is None:
             return
-        fit_camera(self.camera, self.world.layout.bounds, self.window.width, self.window.height)
+        fit_camera(self.camera, self.world.layout.bounds, self.window.width, self.window.height,
+                   left=OVERLAY_WIDTH if self.overlay else 0, zoom=self.zoom, pan=self.pan)
         top = self.window.height - HUD_HEIGHT / 2
         self.hud_texts["course"].position = (16, top)
         self.hud_texts["hole"].position = (self.window.width / 2, top)
         self.hud_texts["strokes"].position = (self.window.width - 16, top)
         self.hud_texts["players"].position = (self.window.width - 16, self.window.height - HUD_HEIGHT - 14)
         self.banner.position = (self.window.width / 2, self.window.height - HUD_HEIGHT - 40)
+
+    def zoom_at(self, x: float, y: float, factor: float) -> None:
+        """Zoom by `factor` keeping the world point under the pointer (x, y) where it is."""
+        before = self.to_world(x, y)
+        self.zoom = min(ZOOM_RANGE[1], max(ZOOM_RANGE[0], self.zoom * factor))
+        if self.zoom == ZOOM_RANGE[0]:
+            self.pan = (0.0, 0.0)  # fully out: the whole hole, centred
+        self.fit()
+        after = self.to_world(x, y)
+        self.pan_by(before[0] - after[0], before[1] - after[1])
+
+    def pan_by(self, dx: float, dy: float) -> None:
+        """Move the view by (dx, dy) metres, keeping some of the hole in sight."""
+        x0, y0, x1, y1 = self.world.layout.bounds
+        self.pan = (min((x1 - x0) / 2, max(-(x1 - x0) / 2, self.pan[0] + dx)),
+                    min((y1 - y0) / 2, max(-(y1 - y0) / 2, self.pan[1] + dy)))
+        self.fit()
 
     def on_resize(self, width: int, height: int) -> None:
         self.fit()
@@ -129,7 +201,8 @@ class PlayView(arcade.View):
         self.hud_texts["hole"].text = (f"Hole {self.round.number} of {self.round.hole_count}: {spec.name}"
                                        f"  ·  Par {spec.par}")
         extra = f" {penalty_text(state.penalties)}" if state.penalties else ""
-        self.hud_texts["strokes"].text = f"{self.turn_prefix()}{strokes_text(state.score)}{extra}"
+        muted = "   [muted]" if self.game.sound.muted else ""
+        self.hud_texts["strokes"].text = f"{self.turn_prefix()}{strokes_text(state.score)}{extra}{muted}"
         self.hud_texts["players"].text = self.scoreboard()
 
     def scoreboard(self) -> str:
@@ -155,13 +228,16 @@ class PlayView(arcade.View):
         if world is None or button != arcade.MOUSE_BUTTON_LEFT or not self.session.can_shoot:
             return
         wx, wy = self.to_world(x, y)
-        if math.hypot(wx - world.ball.x, wy - world.ball.y) <= GRAB_SLACK * world.collider.radius:
+        reach = max(GRAB_SLACK * world.collider.radius, GRAB_PIXELS / self.camera.zoom)
+        if math.hypot(wx - world.ball.x, wy - world.ball.y) <= reach:
             self.aiming = True
             self.grab = self.tip = (wx, wy)
 
     def on_mouse_drag(self, x: int, y: int, dx: int, dy: int, buttons: int, modifiers: int) -> None:
         if self.aiming:
             self.tip = self.to_world(x, y)
+        elif buttons & arcade.MOUSE_BUTTON_RIGHT and self.world is not None:
+            self.pan_by(-dx / self.camera.zoom, -dy / self.camera.zoom)
 
     def on_mouse_release(self, x: int, y: int, button: int, modifiers: int) -> None:
         if not self.aiming or button != arcade.MOUSE_BUTTON_LEFT:
@@ -170,8 +246,14 @@ class PlayView(arcade.View):
         self.tip = self.to_world(x, y)
         self.session.shoot(self.grab, (self.tip[0] - self.grab[0], self.tip[1] - self.grab[1]))
 
+    def on_mouse_scroll(self, x: int, y: int, scroll_x: float, scroll_y: float) -> None:
+        if self.world is not None and scroll_y:
+            self.zoom_at(x, y, ZOOM_STEP ** scroll_y)
+
     def on_key_press(self, symbol: int, modifiers: int) -> None:
-        if symbol == arcade.key.ESCAPE:
+        if window_key(self.window, self.game, symbol):
+            self.update_hud()
+        elif symbol == arcade.key.ESCAPE:
             if self.aiming:
                 self.aiming = False
             else:
@@ -183,8 +265,15 @@ class PlayView(arcade.View):
         elif symbol == arcade.key.F3:
             self.overlay = not self.overlay
             self.system_us.clear()
+            self.fit()
         elif symbol in PRESET_KEYS:
             self.set_preset(PRESET_KEYS[symbol])
+        elif symbol in PAN_KEYS and self.world is not None:
+            step = PAN_STEP * self.window.width / self.camera.zoom
+            self.pan_by(PAN_KEYS[symbol][0] * step, PAN_KEYS[symbol][1] * step)
+        elif symbol in (arcade.key.KEY_0, arcade.key.HOME) and self.world is not None:
+            self.zoom, self.pan = 1.0, (0.0, 0.0)
+            self.fit()
 
     def set_preset(self, name: str) -> None:
         """Switch the accuracy preset live; the next holes keep it."""
@@ -200,16 +289,54 @@ class PlayView(arcade.View):
         world = self.world
         if world is None:
             return
-        if self.overlay:
-            self.step_profiled(world)
-        else:
-            self.session.step()
+        self.frame_seconds.append(delta_time)
+        events, impacts = [], []
+        for _ in range(self.clock.advance(delta_time)):
+            if self.overlay:
+                self.step_profiled(world)
+            else:
+                self.session.step()
+            for seat, poses in enumerate(self.ball_poses):
+                poses.moved_to(self.ball_pose(seat))
+            for poses, mill in zip(self.windmill_poses, world.windmills):
+                poses.moved_to((mill.x, mill.y, mill.angle))
+            self.trail.append(self.ball_poses[world.turn].current[:2])
+            stepped, struck = world.drain_events()
+            self.start_animations(stepped)
+            events += stepped
+            impacts += struck
+        self.game.sound.hear(events, impacts, delta_time)
+        self.animate(delta_time)
         self.banner_time = max(0.0, self.banner_time - delta_time)
         self.update_hud()
         if self.session.hole_over:
             self.finished_for += delta_time
             if self.finished_for >= FINISH_PAUSE:
                 self.finish_hole()
+
+    def start_animations(self, events: list[tuple[str, int, int]]) -> None:
+        """A physics frame's events, seen right after it: the pose before it is where that ball was."""
+        for kind, ball, _ in events:
+            seat = self.seat_of.get(ball)
+            if seat is None:
+                continue
+            if kind == "holed":
+                self.drop_seat, self.drop_from, self.drop_time = seat, self.ball_poses[seat].previous, 0.0
+            elif kind == "penalty":
+                x, y, _ = self.ball_poses[seat].previous
+                self.splashes.append([x, y, 0.0])
+                self.trail.clear()
+
+    def animate(self, delta_time: float) -> None:
+        self.drop_time += delta_time
+        for splash in self.splashes:
+            splash[2] += delta_time
+        self.splashes = [s for s in self.splashes if s[2] < SPLASH_SECONDS]
+        ball, cup = self.world.ball, self.world.layout.cup
+        over = math.hypot(ball.x - cup[0], ball.y - cup[1]) < self.world.layout.cup_radius
+        self.over_cup_time = self.over_cup_time + delta_time if over and not self.world.state.holed else 0.0
+        if ball.asleep:
+            self.trail.clear()
 
     def step_profiled(self, world: HolePlay) -> None:
         """One frame with every system timed; keeps running averages in µs per frame."""
@@ -225,23 +352,27 @@ class PlayView(arcade.View):
         knobs = world.knobs
         names = world.system_names
         total = sum(self.system_us.get(n, 0.0) for n in names)
-        lines = [f"preset {world.preset_name}: {knobs.substeps} substeps x {knobs.iterations} iterations, "
-                 f"{knobs.position_correction}, ccd {'on' if knobs.ccd else 'off'}",
-                 f"physics {total:7.0f} us per frame   contacts {world.contact_count}",
+        frames = list(self.frame_seconds) or [0.0]
+        mean = sum(frames) / len(frames)
+        fps = 1 / mean if mean > 0 else 0.0
+        lines = [f"preset {world.preset_name}: {knobs.substeps} substeps x {knobs.iterations} iterations",
+                 f"  {knobs.position_correction}, ccd {'on' if knobs.ccd else 'off'}",
+                 f"fps {fps:5.1f}  frame {mean * 1e3:4.1f} ms  max {max(frames) * 1e3:.1f}",
+                 f"draw {self.draw_ms:5.2f} ms   physics {total:6.0f} us",
+                 f"contacts {world.contact_count}   physics frames {self.clock.frames}",
                  ""]
         lines += [f"  {name:<12}{self.system_us.get(name, 0.0):7.0f} us" for name in names]
-        lines += ["", "F3 hide   1 fast   2 balanced   3 accurate"]
+        lines += ["", "F3 hide  1 fast  2 balanced  3 accurate"]
         return lines[:OVERLAY_LINES]
 
     def draw_overlay(self) -> None:
+        """A panel down the left, beside the fitted hole (`fit` leaves it room)."""
         lines = self.overlay_lines()
-        top = self.window.height - HUD_HEIGHT - 12
-        width = 600
-        arcade.draw_lrbt_rectangle_filled(8, 8 + width, top - 18 * len(lines) - 8, top + 4,
-                                          self.game.theme.rgba("panel"))
+        top = self.window.height - HUD_HEIGHT
+        arcade.draw_lrbt_rectangle_filled(0, OVERLAY_WIDTH, 0, top, self.game.theme.rgba("panel"))
         for text, line, i in zip(self.overlay_texts, lines, range(len(lines))):
             text.text = line
-            text.position = (16, top - 14 - 18 * i)
+            text.position = (10, top - 20 - 17 * i)
             text.draw()
 
     def finish_hole(self) -> None:
@@ -260,39 +391,90 @@ class PlayView(arcade.View):
         self.world = None
 
     def on_draw(self) -> None:
+        started = time.perf_counter()
         self.clear()
         world = self.world
         if world is None:
             return
+        theme = self.game.theme
+        alpha = self.clock.alpha
         with self.camera.activate():
-            self.hole_art.draw([b.lit > 0 for b in world.bumpers], [(w.x, w.y, w.angle) for w in world.windmills],
-                               self.game.theme)
-            self.draw_balls(world)
+            self.hole_art.draw([b.lit > 0 for b in world.bumpers], [p.at(alpha) for p in self.windmill_poses], theme)
+            self.draw_splashes()
+            self.draw_balls(alpha)
+            self.hole_art.draw_flag()
             if self.aiming:
-                draw_arrow(self.grab, self.tip, self.game.theme)
+                arrow = (self.tip[0] - self.grab[0], self.tip[1] - self.grab[1])
+                draw_arrow(self.grab, self.tip, theme, (world.ball.x, world.ball.y),
+                           world.shot_spin(self.grab, arrow), world.collider.radius)
         self.window.default_camera.use()
         w, h = self.window.width, self.window.height
-        arcade.draw_lrbt_rectangle_filled(0, w, h - HUD_HEIGHT, h, self.game.theme.rgba("panel"))
+        arcade.draw_lrbt_rectangle_filled(0, w, h - HUD_HEIGHT, h, theme.rgba("panel"))
         for text in self.hud_texts.values():
             text.draw()
         if self.banner_time > 0:
-            self.banner.draw()
+            self.draw_backed(self.banner)
         if self.overlay:
             self.draw_overlay()
         if self.session.hole_over:
             self.draw_finish_message(w, h)
+        self.draw_ms = (time.perf_counter() - started) * 1e3
 
-    def draw_balls(self, world: HolePlay) -> None:
-        """Every ball still in play (a finished one has left the green; the last one drops visibly),
-        with a ring around the ball whose turn it is when several play."""
+    def draw_balls(self, alpha: float) -> None:
+        """Every ball still on the green between its last two poses, with a ring around the ball whose
+        turn it is when several play; a ball that drops slides and shrinks into the cup."""
+        world = self.world
         for seat, player in enumerate(world.players):
-            if player.state.finished and not (self.session.hole_over and self.finished_for <= 0.3
-                                              and player.state.holed and seat == world.turn):
-                continue
-            body = player.body
-            self.ball_arts[seat].draw(body.x, body.y, body.angle)
+            if player.state.holed and seat == self.drop_seat:
+                self.draw_drop(seat)
+            elif not player.state.finished:
+                self.draw_ball(seat, alpha)
         if len(world.players) > 1 and self.session.can_shoot:
             draw_turn_ring(world.ball.x, world.ball.y, world.collider.radius, self.ball_arts[world.turn].colour)
+
+    def draw_drop(self, seat: int) -> None:
+        if self.drop_from is None or self.drop_time >= DROP_SECONDS:
+            return
+        t = self.drop_time / DROP_SECONDS
+        ease = t * t * (3 - 2 * t)
+        cx, cy = self.world.layout.cup
+        fx, fy, angle = self.drop_from
+        self.ball_arts[seat].draw_scaled(fx + (cx - fx) * ease, fy + (cy - fy) * ease, angle, 1.0 - 0.75 * ease)
+
+    def draw_ball(self, seat: int, alpha: float) -> None:
+        """A ball between its last two poses; the one in play with its trail, dipping toward a cup it
+        rolls over (the physics decides; this only shows it)."""
+        world = self.world
+        x, y, angle = self.ball_poses[seat].at(alpha)
+        art = self.ball_arts[seat]
+        if seat != world.turn:
+            art.draw(x, y, angle, shadow=True)
+            return
+        if len(self.trail) > 1 and not world.ball.asleep:
+            draw_trail([*self.trail, (x, y)], art.colour, 0.6 * world.collider.radius)
+        if self.over_cup_time > 0:
+            cx, cy = world.layout.cup
+            d = math.hypot(cx - x, cy - y) or 1.0
+            dip = LIP_WOBBLE * abs(math.sin(self.over_cup_time * 40))
+            x, y = x + (cx - x) / d * dip, y + (cy - y) / d * dip
+            angle += 0.15 * math.sin(self.over_cup_time * 55)
+        art.draw(x, y, angle, shadow=True)
+
+    def draw_splashes(self) -> None:
+        colour = self.game.theme.rgba("water")
+        for x, y, age in self.splashes:
+            t = age / SPLASH_SECONDS
+            for ring in (0.5, 1.0):
+                r = 0.2 + 1.2 * t * ring
+                arcade.draw_circle_outline(x, y, r, shade(colour, 0.7, round(220 * (1 - t))), 0.08, num_segments=32)
+
+    def draw_backed(self, text: arcade.Text, pad: float = 12.0) -> None:
+        """A text on a panel, so it reads over any part of the course."""
+        width, height = text.content_width, text.content_height
+        x, y = text.position[0], text.position[1]
+        arcade.draw_lrbt_rectangle_filled(x - width / 2 - pad, x + width / 2 + pad, y - height / 2 - pad / 2,
+                                          y + height / 2 + pad / 2, self.game.theme.rgba("panel"))
+        text.draw()
 
     def draw_finish_message(self, w: int, h: int) -> None:
         if self.finish_text is None:
@@ -301,4 +483,4 @@ class PlayView(arcade.View):
                 words = "Hole over"
             self.finish_text = arcade.Text(words, w / 2, (h - HUD_HEIGHT) / 2, self.game.theme.rgba("text"), 36,
                                            anchor_x="center", anchor_y="center", bold=True)
-        self.finish_text.draw()
+        self.draw_backed(self.finish_text, pad=24.0)

@@ -8,7 +8,7 @@ import arcade
 from arcade.gui import UIAnchorLayout, UIBoxLayout, UIView
 
 from polygolf.game.session import Game, HoleResult, Round, par_text, strokes_text
-from polygolf.game.views.navigation import Navigator
+from polygolf.game.views.navigation import Navigator, window_key
 from polygolf.game.views.widgets import themed_button, title
 
 LABEL_WIDTH = 200.0
@@ -84,7 +84,7 @@ class ResultsView(UIView):
                                 theme.rgba("text"), 12, anchor_x="center", anchor_y="center")
         row_box = UIBoxLayout(vertical=False, space_between=16)
         for text, action in (("Play again", self.on_again), ("Main menu", self.on_menu)):
-            button = themed_button(theme, text, width=220)
+            button = themed_button(theme, text, width=220, clicks=self.game.sound)
             button.on_click = action  # type: ignore[method-assign]
             row_box.add(button)
         anchor = UIAnchorLayout()
@@ -110,6 +110,8 @@ class ResultsView(UIView):
         self.flow.menu()
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:
+        if window_key(self.window, self.game, symbol):
+            return
         if symbol in (arcade.key.ENTER, arcade.key.RETURN, arcade.key.ESCAPE):
             self.on_menu()
 

@@ -14,6 +14,7 @@ import pytest
 
 from polygolf.engine.golf.golfer import golfer_for
 from polygolf.engine.golf.holes import load_courses
+from polygolf.engine.physics.presets import PRESETS
 from polygolf.game.flow import ScreenFlow
 from polygolf.game.session import Game, HoleResult
 from polygolf.game.views.between import BetweenView
@@ -255,7 +256,8 @@ def test_f3_overlay_shows_each_systems_cost_and_keys_switch_the_preset(window, g
     for _ in range(30):
         frame(window)
     lines = play.overlay_lines()
-    assert lines[0].startswith("preset balanced: 4 substeps x 8 iterations")
+    knobs = PRESETS["balanced"]
+    assert lines[0].startswith(f"preset balanced: {knobs.substeps} substeps x {knobs.iterations} iterations")
     fps_line = next(line for line in lines if line.startswith("fps"))
     assert float(fps_line.split()[1]) == pytest.approx(60.0) and "frame 16.7 ms" in fps_line
     x0, y0, x1, y1 = play.world.layout.bounds

@@ -36,8 +36,8 @@ class Knobs:
 # nothing the cases could see, so no preset uses it (it stays a knob).
 PRESETS: dict[str, Knobs] = {
     "fast": Knobs(substeps=2, iterations=4, position_iterations=3, ccd=True, position_correction="split"),
-    "balanced": Knobs(substeps=4, iterations=8, position_iterations=4, ccd=True, position_correction="split"),
-    "accurate": Knobs(substeps=16, iterations=12, position_iterations=4, ccd=True, position_correction="split"),
+    "balanced": Knobs(substeps=4, iterations=4, position_iterations=3, ccd=True, position_correction="split"),
+    "accurate": Knobs(substeps=16, iterations=4, position_iterations=3, ccd=True, position_correction="split"),
 }
 DEFAULT_PRESET = "balanced"
 

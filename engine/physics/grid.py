@@ -27,7 +27,7 @@ class SpatialGrid:
         self.cell_size = cell_size
         self._cells: dict[tuple[int, int], list[tuple[Hashable, AABB]]] = defaultdict(list)
         self._large: list[tuple[Hashable, AABB]] = []  # items too big to file cell by cell
-        self._count = 0
+        self._items: list[tuple[Hashable, AABB]] = []  # every item once, for a query wider than the items
 
     def _cell_range(self, box: AABB) -> tuple[int, int, int, int]:
         inv = 1.0 / self.cell_size
@@ -35,7 +35,7 @@ class SpatialGrid:
                 math.floor(box[2] * inv), math.floor(box[3] * inv))
 
     def insert(self, item: Hashable, box: AABB) -> None:
-        self._count += 1
+        self._items.append((item, box))
         x0, y0, x1, y1 = self._cell_range(box)
         if (x1 - x0 + 1) * (y1 - y0 + 1) > MAX_CELLS:
             self._large.append((item, box))
@@ -47,28 +47,25 @@ class SpatialGrid:
     def clear(self) -> None:
         self._cells.clear()
         self._large.clear()
-        self._count = 0
+        self._items.clear()
 
     def query(self, box: AABB) -> list[Hashable]:
         """Items whose boxes overlap `box`, each once."""
         x0, y0, x1, y1 = self._cell_range(box)
         cells = self._cells
-        large = [item for item, other in self._large if overlaps(box, other)]
+        large = [item for item, other in self._large if overlaps(box, other)] if self._large else []
         if x0 == x1 and y0 == y1:
-            return [item for item, other in cells.get((x0, y0), ()) if overlaps(box, other)] + large
+            found = [item for item, other in cells.get((x0, y0), ()) if overlaps(box, other)]
+            return found + large if large else found
+        if (x1 - x0 + 1) * (y1 - y0 + 1) > len(self._items):  # wider than there are items: each item once
+            return [item for item, other in self._items if overlaps(box, other)]
         seen: dict[Hashable, None] = {}
-        if (x1 - x0 + 1) * (y1 - y0 + 1) > self._count:  # a huge query: look at each item once instead
-            for members in cells.values():
-                for item, other in members:
-                    if item not in seen and overlaps(box, other):
-                        seen[item] = None
-            return list(seen) + large
         for cx in range(x0, x1 + 1):
             for cy in range(y0, y1 + 1):
                 for item, other in cells.get((cx, cy), ()):
                     if item not in seen and overlaps(box, other):
                         seen[item] = None
-        return list(seen) + large
+        return list(seen) + large if large else list(seen)
 
     def pairs(self) -> Iterator[tuple[Hashable, Hashable]]:
         """Every pair of items whose boxes overlap, each once, in a stable order."""

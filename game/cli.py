@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import sys
 import time
 from collections.abc import Sequence
@@ -403,6 +404,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     except (KeyError, ValueError) as exc:  # unknown course, theme, shape, hole number
         print(f"polygolf: {exc.args[0] if exc.args else exc}", file=sys.stderr)
         return EXIT_CONTENT
+    except BrokenPipeError:
+        # The reader went away (`polygolf simulate ... | head`): stop quietly, as command-line tools do.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
 
 
 if __name__ == "__main__":

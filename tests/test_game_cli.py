@@ -10,6 +10,7 @@ import sys
 import numpy as np
 from PIL import Image
 
+from polygolf.engine.loading.paths import SCENES_DIR as ROOT_SCENES
 from polygolf.game.cli import main
 from polygolf.game.theme import Theme
 
@@ -63,3 +64,13 @@ def test_validate_passes_on_shipped_content_and_fails_on_broken(tmp_path, capsys
     assert err[0] == f"{bad / 'ugly.yaml'}:2: background: a colour is \"#RRGGBB\" or \"#RRGGBBAA\", got 'green'"
     missing = [name for name in Theme.model_fields if name not in ("name", "background")]
     assert err[1:] == [f"{bad / 'ugly.yaml'}:1: {name}: missing (required)" for name in missing]
+
+
+def test_a_reader_that_goes_away_is_no_traceback():
+    """`polygolf simulate ... | head -c 0`: the pipe closes early; the command stops quietly."""
+    scene = ROOT_SCENES / "flat-wall.yaml"
+    proc = subprocess.Popen([sys.executable, "-m", "polygolf", "simulate", str(scene), "--json"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    proc.stdout.close()  # gone before the command writes a byte
+    err = proc.stderr.read().decode()
+    assert proc.wait(timeout=60) == 0 and "Traceback" not in err, err

@@ -10,7 +10,7 @@ from pathlib import Path
 from polygolf.engine.assembly.assemble import assemble
 from polygolf.engine.assembly.simulation import Simulation
 from polygolf.engine.assembly.spec import WorldSpec
-from polygolf.engine.components import Ball, Cup, Drag, HoleState, Launcher
+from polygolf.engine.components import Ball, Cup, HoleState, Launcher
 from polygolf.engine.golf.holes import Hole, find_course, load_all_courses, load_hole_file
 from polygolf.engine.golf.world import hole_spec
 from polygolf.engine.loading.scene import Scene, ShapeSpec, load_scene, scene_spec
@@ -41,7 +41,7 @@ def scene_on_hole(scene: Scene, hole: Hole) -> WorldSpec:
     own = scene_spec(scene)
     course = hole_spec(hole, ShapeSpec(regular=5, radius=1.0))
     green = course.bodies[0].drag
-    bodies = [replace(b, drag=b.drag or (Drag(**_fields(green)) if green else None),
+    bodies = [replace(b, drag=b.drag or (replace(green) if green else None),  # each body its own copy
                       extras=(*b.extras, Ball(*b.position))) for b in own.bodies]
     entities = [e for e in course.entities if not isinstance(e[0], HoleState | Launcher)]
     cup = next(e[0] for e in entities if isinstance(e[0], Cup))
@@ -49,11 +49,6 @@ def scene_on_hole(scene: Scene, hole: Hole) -> WorldSpec:
                    rules={"cup": f"the hole's cup at ({cup.x:g}, {cup.y:g})"},
                    content_effects={k: v for k, v in course.content_effects.items() if k != "launch"},
                    cell_size=course.cell_size)
-
-
-def _fields(drag: Drag) -> dict[str, float]:
-    return {"linear": drag.linear, "angular": drag.angular, "rolling": drag.rolling,
-            "rolling_angular": drag.rolling_angular}
 
 
 def build_scene_file(path: str | Path, knobs: Knobs | str | None = None) -> Simulation:

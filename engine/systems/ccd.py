@@ -25,16 +25,20 @@ class CCDProcessor(esper.Processor):
     def process(self) -> None:
         bodies = esper.get_components(Body, Collider)
         first: dict[int, float] = {}
+        longest = 0.0  # the longest step of an awake body
         for ent, (body, col) in bodies:
-            if body.asleep or body.inv_mass == 0.0 or _travel(body, col) < LINEAR_SLOP:
+            if body.asleep:
+                continue
+            travel = _travel(body, col)
+            longest = max(longest, travel)
+            if body.inv_mass == 0.0 or travel < LINEAR_SLOP:
                 continue  # small motions cannot skip anything: the discrete contact handles them
             t = self._first_wall_hit(body, col)
             if t < 1.0:
                 first[ent] = t
-        if len(bodies) > 1:
-            # No pair can need sweeping while no body steps half the linear slop.
-            if any(not body.asleep and _travel(body, col) >= 0.5 * LINEAR_SLOP for _, (body, col) in bodies):
-                self._body_hits(bodies, first)
+        # No pair can need sweeping while no body steps half the linear slop.
+        if len(bodies) > 1 and longest >= 0.5 * LINEAR_SLOP:
+            self._body_hits(bodies, first)
         for ent, t in first.items():
             body = esper.component_for_entity(ent, Body)
             s = body.scratch

@@ -1,0 +1,146 @@
+"""Random nine: a course of nine generated holes drawn from one seed, kept in the data folder.
+
+Proving nine holes takes a while (the golfer plays each), so each hole is written as soon as it is
+proven, to DATA/generated/nine-SEED/ (hole-1.yaml ... hole-9.yaml, then courses.yaml), with a
+manifest, nine.json, saying what built them. The next time the same seed is asked for, the course is
+loaded from there at once; a build stopped part-way goes on from the holes already written. A folder
+built by another generator version or from another tile library is built again: a seed names a
+course only for one generator and one library.
+
+Hole k of seed S is `generate --seed S --hole k` proven at the same preset (`NINE_KNOBS`), so
+friends with the same seed play the same holes.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import random
+from collections.abc import Callable
+from pathlib import Path
+
+from polygolf.engine.golf.generate import Prove, generate, golfer_proof, schema_ref
+from polygolf.engine.golf.holes import Course, load_courses
+from polygolf.engine.loading.course import TileLibrary, load_library
+from polygolf.engine.loading.paths import data_dir
+from polygolf.engine.loading.yamlsource import ContentError
+
+GENERATOR_VERSION = 1  # bump when the same seed would draw other holes
+NINE = 9
+NINE_KNOBS = "fast"  # the preset the holes are proven at (play is at any preset)
+NINE_EFFORT = "quick"
+COURSE_ID = "random-nine"  # the choice's name on the command line and in the settings
+SEED_RANGE = (1, 99_999)  # new seeds are short enough to read out to a friend
+
+
+class BuildCancelled(RuntimeError):
+    """The build was asked to stop; the holes already written are kept for next time."""
+
+
+def new_seed() -> int:
+    """A fresh seed for a new course (not part of any hole's drawing, so not from a seeded stream)."""
+    return random.SystemRandom().randint(*SEED_RANGE)
+
+
+def course_id(seed: int) -> str:
+    return f"{COURSE_ID}-{seed}"
+
+
+def course_name(seed: int) -> str:
+    return f"Random nine · seed {seed}"
+
+
+def nine_folder(seed: int) -> Path:
+    return data_dir() / "generated" / f"nine-{seed}"
+
+
+def _library_key(library: TileLibrary) -> str:
+    return hashlib.sha256(library.model_dump_json().encode()).hexdigest()[:16]
+
+
+def _manifest(seed: int, library: TileLibrary) -> dict:
+    return {"seed": seed, "generator": GENERATOR_VERSION, "library": _library_key(library), "knobs": NINE_KNOBS,
+            "effort": NINE_EFFORT, "holes": {}}
+
+
+def _read_manifest(folder: Path) -> dict | None:
+    try:
+        data = json.loads((folder / "nine.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    return data if isinstance(data, dict) and isinstance(data.get("holes"), dict) else None
+
+
+def _same_build(found: dict | None, wanted: dict) -> bool:
+    return found is not None and all(found.get(k) == wanted[k] for k in wanted if k != "holes")
+
+
+def _write(path: Path, text: str) -> None:
+    """Whole or not at all: a build stopped mid-write leaves no half file."""
+    part = path.with_name(path.name + ".part")
+    part.write_text(text, encoding="utf-8")
+    os.replace(part, path)
+
+
+def load_nine(seed: int, library: TileLibrary | None = None) -> Course | None:
+    """The course of `seed` if it is fully built by this generator from this library and every hole
+    loads; else None (then `build_nine`)."""
+    library = library or load_library()
+    folder = nine_folder(seed)
+    manifest = _read_manifest(folder)
+    if not _same_build(manifest, _manifest(seed, library)) or len(manifest["holes"]) < NINE \
+            or not (folder / "courses.yaml").exists():
+        return None
+    try:
+        courses = load_courses(folder / "courses.yaml", library)
+    except ContentError:
+        return None
+    if len(courses) != 1 or len(courses[0].playable) != NINE:
+        return None
+    course = courses[0]
+    course.id = course_id(seed)  # not the name's: the name has a '·'
+    return course
+
+
+def build_nine(seed: int, *, library: TileLibrary | None = None, prove: Prove | None = None,
+               progress: Callable[[int, int], None] | None = None,
+               cancelled: Callable[[], bool] | None = None) -> Course:
+    """The course of `seed`: from the cache, else generated and proven hole by hole (`progress(k, 9)`
+    before hole k is drawn; `cancelled()` asked between holes: BuildCancelled). Raises GenerateError
+    if a hole cannot be made, OSError if the data folder cannot be written."""
+    library = library or load_library()
+    cached = load_nine(seed, library)
+    if cached is not None:
+        return cached
+    folder = nine_folder(seed)
+    folder.mkdir(parents=True, exist_ok=True)
+    wanted = _manifest(seed, library)
+    manifest = _read_manifest(folder)
+    if not _same_build(manifest, wanted):
+        manifest = wanted
+    prove = prove or golfer_proof(NINE_KNOBS, NINE_EFFORT)
+    schema = schema_ref(folder)
+    for k in range(1, NINE + 1):
+        path = folder / f"hole-{k}.yaml"
+        if str(k) in manifest["holes"] and path.exists():
+            continue
+        if cancelled is not None and cancelled():
+            raise BuildCancelled(f"stopped before hole {k} of {NINE}")
+        if progress is not None:
+            progress(k, NINE)
+        made = generate(seed, library, number=k, prove=prove, schema=schema)
+        _write(path, made.text)
+        proof = made.proof
+        manifest["holes"][str(k)] = {"name": made.plan.name, "draw": made.plan.draw, "tiles": len(made.plan.tiles),
+                                     "par": made.plan.par if proof is None else int(proof.estimated_par),
+                                     "best_strokes": getattr(proof, "best_strokes", None),
+                                     "seconds": round(made.seconds, 2)}
+        _write(folder / "nine.json", json.dumps(manifest, indent=1, sort_keys=True) + "\n")
+    holes = ", ".join(f"hole-{k}" for k in range(1, NINE + 1))
+    _write(folder / "courses.yaml", f"# Random nine, seed {seed}: made by the game; delete the folder to build it "
+                                    f"again.\ncourses:\n  - name: {course_name(seed)}\n    holes: [{holes}]\n")
+    course = load_nine(seed, library)
+    if course is None:
+        raise ContentError(folder / "courses.yaml", 1, "courses", "the course just built does not load")
+    return course

@@ -52,11 +52,13 @@ def run_menu() -> None:
     arcade_run()
 
 
-def _game_for(course: str | None, hole: int, theme: str | None, shape, only=None, players: list[str] | None = None):
+def _game_for(course: str | None, hole: int, theme: str | None, shape, only=None, players: list[str] | None = None,
+              seed: int | None = None):
     """The game set up from command-line choices; refuses an unknown course, theme, shape or hole.
-    `only`: play this course alone (a hole file). `players`: their names (default: as saved)."""
+    `only`: play this course alone (a hole file). `players`: their names (default: as saved).
+    `random-nine` is built first if it is not in the data folder yet (`seed`: default as saved)."""
     from polygolf.engine.golf.holes import find_course
-    from polygolf.game.session import Game
+    from polygolf.game.session import RANDOM_NINE, Game
     from polygolf.game.shapes import parse_shape
     from polygolf.game.theme import find_theme
 
@@ -65,6 +67,10 @@ def _game_for(course: str | None, hole: int, theme: str | None, shape, only=None
         game.players = list(players)
     if only is not None:
         game.courses, game.course_index = [only], 0
+    elif course == RANDOM_NINE:
+        game.choose_random_nine(seed)
+        if game.random_nine is None:
+            game.random_nine = build_nine_here(game.random_seed)
     elif not game.courses:
         raise ValueError(game.problems[0] if game.problems else "no course could be read")
     else:
@@ -78,11 +84,31 @@ def _game_for(course: str | None, hole: int, theme: str | None, shape, only=None
     return game
 
 
+def build_nine_here(seed: int):
+    """Random nine of `seed` built in this process, a console line a hole (the window is not open yet)."""
+    import sys
+    import time
+
+    from polygolf.engine.golf.nine import NINE, build_nine
+
+    started = time.perf_counter()
+
+    def progress(k: int, total: int) -> None:
+        print(f"polygolf: Random nine, seed {seed}: building hole {k} of {total}...", file=sys.stderr, flush=True)
+
+    course = build_nine(seed, progress=progress)
+    print(f"polygolf: Random nine, seed {seed}: {NINE} holes built and proven in {time.perf_counter() - started:.0f} s",
+          file=sys.stderr)
+    return course
+
+
 def run_play(course: str, hole: int, theme: str | None, shape: str | None, preset: str,
-             players: list[str] | None = None) -> None:
+             players: list[str] | None = None, seed: int | None = None) -> None:
     from polygolf.game.flow import ScreenFlow
 
-    game = _game_for(course, hole, theme, shape, players=players)
+    if course == "random-nine":
+        _check_display()  # before minutes of building, not after
+    game = _game_for(course, hole, theme, shape, players=players, seed=seed)
     game.preset = preset
     game.guide_seen = True
     ScreenFlow(make_window(), game).new_round(hole - 1)
@@ -139,14 +165,14 @@ def arcade_run() -> None:
 
 
 def render_hole(course: str, hole: int, theme: str | None, shape: str | None, out: Path,
-                size: tuple[int, int] = WINDOW_SIZE) -> Path:
+                size: tuple[int, int] = WINDOW_SIZE, seed: int | None = None) -> Path:
     """Draw a hole as the play view shows it, headless, to a PNG."""
     os.environ.setdefault("ARCADE_HEADLESS", "1")
     import arcade
 
     from polygolf.game.views.play import PlayView
 
-    game = _game_for(course, hole, theme, shape)
+    game = _game_for(course, hole, theme, shape, seed=seed)
     broken = game.course.holes[hole - 1]
     if isinstance(broken, Exception):
         raise broken

@@ -83,6 +83,27 @@ def player_names(players: int | None, names: list[str] | None) -> list[str] | No
     return default_names(players) if players is not None else None
 
 
+MAX_SEED = 2**63 - 1
+
+
+def seed_arg(text: str) -> int:
+    if not text.strip().isdigit() or int(text) > MAX_SEED:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a seed: a whole number from 0 to {MAX_SEED}")
+    return int(text)
+
+
+def hole_number_arg(text: str) -> int:
+    if not text.strip().isdigit() or not 1 <= int(text) <= 99:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a hole number from 1 to 99")
+    return int(text)
+
+
+def yaml_arg(text: str) -> Path:
+    if not text.lower().endswith((".yaml", ".yml")):
+        raise argparse.ArgumentTypeError(f"{text!r} is not a .yaml file")
+    return Path(text)
+
+
 def png_arg(text: str) -> Path:
     if not text.lower().endswith(".png"):
         raise argparse.ArgumentTypeError(f"{text!r} is not a .png file")
@@ -168,20 +189,70 @@ def _play(args: argparse.Namespace) -> int:
     if args.watch:
         print("polygolf: --watch needs a hole file: polygolf play FILE.yaml --watch", file=sys.stderr)
         return EXIT_CONTENT
+    if args.seed is not None and args.course != "random-nine":
+        print("polygolf: --seed is for --course random-nine", file=sys.stderr)
+        return EXIT_CONTENT
     return _window(run_play, args.course, args.hole, args.theme, args.shape, args.preset,
-                   player_names(args.players, args.names))
+                   player_names(args.players, args.names), args.seed)
+
+
+def _generate(args: argparse.Namespace) -> int:
+    """One procedural hole: drawn, loaded, proven by the search golfer (draws it cannot sink are
+    refused), written with the golfer's par, and checked again as `validate` checks it."""
+    from polygolf.engine.golf.generate import GenerateError, generate, golfer_proof, schema_ref
+    from polygolf.engine.golf.holes import library_beside
+    from polygolf.game.tools.validate import check_file
+
+    started = time.perf_counter()
+    out: Path = args.out
+    try:
+        out.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        print(f"polygolf: --out: cannot make the folder {out.parent}: {exc.strerror}", file=sys.stderr)
+        return EXIT_CONTENT
+    library = library_beside(out)  # the library `validate` and `play` will read it with
+    print(f"polygolf: generating hole {args.hole} of seed {args.seed}, proving it at {args.preset}...",
+          file=sys.stderr)
+    try:
+        made = generate(args.seed, library, number=args.hole, prove=golfer_proof(args.preset),
+                        schema=schema_ref(out.parent),
+                        progress=lambda line: print(f"polygolf: {line}", file=sys.stderr))
+    except GenerateError as exc:
+        print(f"polygolf: {exc}", file=sys.stderr)
+        return 1
+    try:
+        out.write_text(made.text, encoding="utf-8")
+    except OSError as exc:
+        print(f"polygolf: --out: cannot write {out}: {exc.strerror or exc}", file=sys.stderr)
+        return EXIT_CONTENT
+    problems = check_file(out)
+    for problem in problems:
+        print(problem, file=sys.stderr)
+    if problems:
+        return 1
+    proof = made.proof
+    print(f"{out}: {made.plan.name}, {len(made.plan.tiles)} tiles, estimated par {proof.estimated_par} "
+          f"(golfer's best {proof.best_strokes}), draw {made.plan.draw}, {time.perf_counter() - started:.1f} s")
+    return 0
 
 
 def _autoplay(args: argparse.Namespace) -> int:
     """The scripted golfer plays a whole round headless; saved and recorded like any round."""
     from polygolf.engine.golf.golfer import golfer_for
     from polygolf.engine.golf.holes import find_course
-    from polygolf.game.session import Game, par_text, strokes_text
+    from polygolf.game.app import build_nine_here
+    from polygolf.game.session import RANDOM_NINE, Game, par_text, strokes_text
 
     game = Game.load()
-    if not game.courses:
+    if args.seed is not None and args.course != RANDOM_NINE:
+        raise ValueError("--seed is for --course random-nine")
+    if args.course == RANDOM_NINE:
+        game.choose_random_nine(args.seed)
+        course = game.random_nine or build_nine_here(game.random_seed)
+    elif not game.courses:
         raise ValueError(game.problems[0] if game.problems else "no course could be read")
-    course = find_course(game.courses, args.course)
+    else:
+        course = find_course(game.courses, args.course)
     game.courses, game.course_index = [course], 0  # this round's course, not saved as the menu's choice
     game.players = player_names(args.players, args.names) or ["Golfer"]
     if args.shape is not None:
@@ -250,7 +321,7 @@ def _replay(args: argparse.Namespace) -> int:
 
 
 def _render(args: argparse.Namespace) -> int:
-    from polygolf.game.app import render_hole
+    from polygolf.game.app import WINDOW_SIZE, render_hole
 
     try:
         args.out.parent.mkdir(parents=True, exist_ok=True)
@@ -258,7 +329,9 @@ def _render(args: argparse.Namespace) -> int:
         print(f"polygolf: --out: cannot make the folder {args.out.parent}: {exc.strerror}", file=sys.stderr)
         return EXIT_CONTENT
     try:
-        out = _window(render_hole, args.course, args.hole, args.theme, args.shape, args.out)
+        if args.seed is not None and args.course != "random-nine":
+            raise ValueError("--seed is for random-nine")
+        out = _window(render_hole, args.course, args.hole, args.theme, args.shape, args.out, WINDOW_SIZE, args.seed)
     except OSError as exc:
         print(f"polygolf: --out: cannot write {args.out}: {exc.strerror or exc}", file=sys.stderr)
         return EXIT_CONTENT
@@ -337,7 +410,18 @@ def build_parser() -> argparse.ArgumentParser:
     play.add_argument("--players", type=players_arg, default=None, help="1 to 4 players taking turns (default: as "
                                                                           "chosen last in the menu)")
     play.add_argument("--names", type=names_arg, default=None, help="the players' names: Ann,Bob")
+    play.add_argument("--seed", type=seed_arg, default=None, help="with --course random-nine: the course's seed "
+                                                                  "(default: the one chosen last)")
     play.set_defaults(run=_play)
+
+    gen = sub.add_parser("generate", help="a procedural hole: valid, proven sinkable by the golfer, par estimated")
+    gen.add_argument("--seed", type=seed_arg, required=True, help="the same seed gives the same hole")
+    gen.add_argument("--out", type=yaml_arg, required=True, help="hole file to write (folders are made)")
+    gen.add_argument("--hole", type=hole_number_arg, default=1,
+                     help="which hole of the seed (default 1; Random nine's hole k is --hole k)")
+    gen.add_argument("--preset", choices=list(PRESETS), default="fast",
+                     help="the preset the golfer proves it at (default fast, as Random nine)")
+    gen.set_defaults(run=_generate)
 
     auto = sub.add_parser("autoplay", help="the built-in golfer plays a round headless; saved and recorded")
     auto.add_argument("--course", default="meadow", help="course name (default meadow)")
@@ -345,6 +429,7 @@ def build_parser() -> argparse.ArgumentParser:
     auto.add_argument("--names", type=names_arg, default=None, help="their names: Ann,Bob")
     auto.add_argument("--preset", choices=list(PRESETS), default="balanced")
     auto.add_argument("--shape", type=shape_arg, default=None, help="pentagon, star-5-2, random-SEED ...")
+    auto.add_argument("--seed", type=seed_arg, default=None, help="with --course random-nine: the course's seed")
     auto.set_defaults(run=_autoplay)
 
     scores = sub.add_parser("scores", help="the bests kept: per hole and per course, for each ball shape")
@@ -363,6 +448,7 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument("--theme", default=None)
     render.add_argument("--shape", type=shape_arg, default=None)
     render.add_argument("--out", type=png_arg, required=True, help="PNG file to write (folders are made)")
+    render.add_argument("--seed", type=seed_arg, default=None, help="with random-nine: the course's seed")
     render.set_defaults(run=_render)
 
     val = sub.add_parser("validate", help="check content files (default: the shipped and your own content)")

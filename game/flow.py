@@ -1,6 +1,7 @@
 """The screen flow: the one place that decides which screen follows which.
 
-    menu ─▶ (guide, first time) ─▶ play ⇄ pause          menu ⇄ names, guide
+    menu ─▶ (build Random nine, first time for a seed) ─▶ (guide, first time) ─▶ play ⇄ pause
+    menu ⇄ names, guide
               play ─▶ between ─▶ play … ─▶ results ─▶ play again | menu
               play ⇄ replay (L: the last shot again)
     `polygolf replay FILE`: replay ─▶ results ─▶ menu
@@ -15,9 +16,11 @@ from __future__ import annotations
 import arcade
 
 from polygolf.engine.golf.holes import Course
+from polygolf.game.building import NineBuild
 from polygolf.game.record import RoundRecord
 from polygolf.game.session import Game, HoleResult, Round, RoundPlay
 from polygolf.game.views.between import BetweenView
+from polygolf.game.views.build import BuildView
 from polygolf.game.views.guide import GuideView
 from polygolf.game.views.menu import MenuView
 from polygolf.game.views.names import NamesView
@@ -50,6 +53,10 @@ class ScreenFlow:
 
     def new_round(self, start_at: int = 0) -> None:
         self._leave_hole()
+        if self.game.random_chosen and self.game.random_nine is None:
+            # Built (and proven) first, with its progress shown; that screen comes back here when done.
+            self._show(BuildView(self.game, NineBuild(self.game.random_seed).start(), self))
+            return
         self.game.start_round(start_at)
         if self.game.guide_seen:
             self.next_hole()

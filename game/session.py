@@ -9,6 +9,8 @@ from pathlib import Path
 
 from polygolf import __version__
 from polygolf.engine.golf.holes import Course, Hole, load_all_courses
+from polygolf.engine.golf.nine import COURSE_ID as RANDOM_NINE
+from polygolf.engine.golf.nine import course_name, load_nine, new_seed
 from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.loading.yamlsource import ContentError
@@ -350,7 +352,11 @@ def default_names(count: int) -> list[str]:
 @dataclass
 class Game:
     """Everything the screens share: content, the player's choices, and the round in progress.
-    With a `store`, the choices are read at launch and written back whenever they change."""
+    With a `store`, the choices are read at launch and written back whenever they change.
+
+    The Course choice cycles through the content's courses and then Random nine: nine generated holes
+    from `random_seed` (`engine.golf.nine`). `random_nine` is that course once built or found in the
+    data folder; until then the choice has no course to play, and the flow builds it first."""
 
     courses: list[Course]
     themes: list[Theme]
@@ -367,6 +373,8 @@ class Game:
     session: RoundPlay | None = None
     record_rounds: bool = True  # False: practice (a hole file being edited): nothing saved
     sound: SoundBoard = field(default_factory=lambda: SoundBoard(ArcadePlayer()))
+    random_seed: int = field(default_factory=new_seed)
+    random_nine: Course | None = None  # the course of random_seed, once built or found built
 
     @classmethod
     def load(cls, store: Store | None = None) -> Game:
@@ -384,16 +392,23 @@ class Game:
     def settings(self) -> dict[str, object]:
         return {"theme": self.theme.name, "shape": {"label": self.shape_label, "spec": self.shape.model_dump(
             mode="json", exclude_none=True)}, "course": self.course.id if self.course else None,
-            "players": self.players, "volume": self.sound.volume, "guide_seen": self.guide_seen}
+            "players": self.players, "volume": self.sound.volume, "guide_seen": self.guide_seen,
+            "random_seed": self.random_seed}
 
     def apply_settings(self, saved: dict[str, object]) -> None:
         """Take what was saved; a value that no longer fits (a theme or course gone) is left at its default."""
         themes = [t.name for t in self.themes]
         if saved.get("theme") in themes:
             self.theme_index = themes.index(saved["theme"])
+        seed = saved.get("random_seed")
+        if isinstance(seed, int) and not isinstance(seed, bool) and 0 <= seed < 2**63:
+            self.random_seed = seed
         courses = [c.id for c in self.courses]
         if saved.get("course") in courses:
             self.course_index = courses.index(saved["course"])
+        elif saved.get("course") == RANDOM_NINE:
+            self.course_index = len(self.courses)
+            self.random_nine = self._cached_nine()
         shape = saved.get("shape")
         if isinstance(shape, dict) and isinstance(shape.get("label"), str):
             try:
@@ -420,18 +435,51 @@ class Game:
         return self.themes[self.theme_index]
 
     @property
+    def random_chosen(self) -> bool:
+        """Random nine is the chosen course (the choice after the content's courses)."""
+        return self.course_index >= len(self.courses)
+
+    @property
     def course(self) -> Course | None:
-        """The chosen course; None only when no course file could be read."""
-        return self.courses[self.course_index] if self.courses else None
+        """The chosen course; None when Random nine is chosen but not built yet, or no course could be read."""
+        return self.random_nine if self.random_chosen else self.courses[self.course_index]
+
+    @property
+    def course_label(self) -> str:
+        """The chosen course's name as the menu shows it (Random nine with its seed, built or not)."""
+        return course_name(self.random_seed) if self.random_chosen else self.courses[self.course_index].name
 
     def next_theme(self) -> None:
         self.theme_index = (self.theme_index + 1) % len(self.themes)
         self.save_settings()
 
     def next_course(self) -> None:
-        if self.courses:
-            self.course_index = (self.course_index + 1) % len(self.courses)
+        """The next course; after the last, Random nine (found in the data folder if built before)."""
+        self.course_index = (self.course_index + 1) % (len(self.courses) + 1)
+        if self.random_chosen:
+            self.random_nine = self._cached_nine()
         self.save_settings()
+
+    def choose_random_nine(self, seed: int | None = None) -> None:
+        """Random nine of `seed` (default: the seed chosen last), from the data folder if built before.
+        (The command line's choice: not saved as the menu's.)"""
+        self.course_index = len(self.courses)
+        if seed is not None and seed != self.random_seed:
+            self.random_seed, self.random_nine = seed, None
+        if self.random_nine is None:
+            self.random_nine = self._cached_nine()
+
+    def new_random_seed(self) -> None:
+        """Another Random nine: a fresh seed (its course is built when it is first played)."""
+        self.random_seed = new_seed()
+        self.random_nine = self._cached_nine()
+        self.save_settings()
+
+    def _cached_nine(self) -> Course | None:
+        try:
+            return load_nine(self.random_seed)
+        except (ContentError, OSError):  # no library to draw from, or no data folder: built (and said) on Play
+            return None
 
     def next_shape(self) -> None:
         labels = [label for label, _ in CATALOGUE]

@@ -1,5 +1,6 @@
-"""The menu: Play, Environment (themes), Polygon (shapes), Random polygon, Course, Players, Names, Guide, Quit;
-the chosen polygon is drawn beside the buttons."""
+"""The menu: Play, Environment (themes), Polygon (shapes), Random polygon, Course (the courses, then Random
+nine with its seed, and then New seed under it), Players, Names, Sound, Guide, Quit; the chosen polygon is
+drawn beside the buttons."""
 
 from __future__ import annotations
 
@@ -31,14 +32,17 @@ class MenuView(UIView):
                                     anchor_x="center", anchor_y="center", italic=True)
         self.shape_caption = arcade.Text(game.shape_label, 0, 0, theme.rgba("text"), 18, anchor_x="center",
                                          anchor_y="center")
-        column = UIBoxLayout(vertical=True, space_between=6)  # ten buttons fit under the title at 720 px
+        # Ten buttons fit under the title at 720 px; eleven (New seed) with a little less space between.
+        column = UIBoxLayout(vertical=True, space_between=4 if game.random_chosen else 6)
         self.buttons = {}
+        seed = [("seed", "New seed", self.on_new_seed)] if game.random_chosen else []
         for key, text, action in (
             ("play", "Play", self.on_play),
             ("theme", f"Environment: {theme.name}", self.on_theme),
             ("shape", f"Polygon: {game.shape_label}", self.on_shape),
             ("random", "Random polygon", self.on_random),
-            ("course", f"Course: {game.course.name}" if game.course else "No course could be read", self.on_course),
+            ("course", f"Course: {game.course_label}", self.on_course),
+            *seed,
             ("players", f"Players: {len(game.players)}", self.on_players),
             ("names", "Names: " + ", ".join(game.players), self.on_names),
             ("volume", f"Sound: {self.volume_label}", self.on_volume),
@@ -61,8 +65,8 @@ class MenuView(UIView):
 
     # Actions: each changes the game's choices and rebuilds the screen in the new look.
     def on_play(self, _event=None) -> None:
-        if self.game.course is not None:
-            self.flow.new_round()
+        if self.game.course is not None or self.game.random_chosen:
+            self.flow.new_round()  # Random nine is built first if it is not yet
 
     def on_theme(self, _event=None) -> None:
         self.game.next_theme()
@@ -78,6 +82,11 @@ class MenuView(UIView):
 
     def on_course(self, _event=None) -> None:
         self.game.next_course()
+        self.build()
+
+    def on_new_seed(self, _event=None) -> None:
+        """Another Random nine (built when it is played)."""
+        self.game.new_random_seed()
         self.build()
 
     def on_players(self, _event=None) -> None:

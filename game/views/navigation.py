@@ -15,7 +15,8 @@ class Navigator(Protocol):
         """The main menu (any round in progress is abandoned)."""
 
     def new_round(self) -> None:
-        """A round of the chosen course from its first hole (the guide first, if never seen)."""
+        """A round of the chosen course from its first hole (the guide first, if never seen); a Random
+        nine not built yet is built first, its progress shown."""
 
     def names(self) -> None:
         """The players' names, then back to the menu."""

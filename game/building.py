@@ -1,0 +1,79 @@
+"""Random nine built in a background thread, so its screen can show the progress and stay responsive.
+
+Why a thread and not a hole per frame: proving one hole takes seconds, and a window that draws nothing
+for seconds looks hung. Only this thread simulates while it runs (esper keeps its worlds in module
+state, so two threads must never simulate at once): the screen that shows it draws text only, and
+leaves for the menu only after the thread has stopped (`cancel` stops it between holes).
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from collections.abc import Callable
+
+from polygolf.engine.golf.holes import Course
+from polygolf.engine.golf.nine import NINE, BuildCancelled, build_nine
+
+
+class NineBuild:
+    """One build of Random nine for `seed`; read `hole`, `course`, `error` and `finished` from any thread."""
+
+    def __init__(self, seed: int, build: Callable[..., Course] = build_nine) -> None:
+        self.seed = seed
+        self.total = NINE
+        self.hole = 0  # the hole being built (1-based); 0 before the first
+        self.course: Course | None = None
+        self.error: str | None = None
+        self.started = 0.0
+        self.seconds = 0.0
+        self._build = build
+        self._stop = threading.Event()
+        self._thread = threading.Thread(target=self._run, name=f"random-nine-{seed}", daemon=True)
+
+    def start(self) -> NineBuild:
+        self.started = time.perf_counter()
+        self._thread.start()
+        return self
+
+    def _run(self) -> None:
+        try:
+            self.course = self._build(self.seed, progress=self._progress, cancelled=self._stop.is_set)
+        except BuildCancelled:
+            pass
+        except Exception as exc:  # any failure is shown on the screen, never a dead thread and a hung screen
+            self.error = str(exc) or type(exc).__name__
+        finally:
+            self.seconds = time.perf_counter() - self.started
+
+    def _progress(self, hole: int, total: int) -> None:
+        self.hole, self.total = hole, total
+
+    def cancel(self) -> None:
+        """Stop after the hole being built (it is kept for next time)."""
+        self._stop.set()
+
+    @property
+    def cancelled(self) -> bool:
+        return self._stop.is_set()
+
+    @property
+    def finished(self) -> bool:
+        return self._thread.ident is not None and not self._thread.is_alive()
+
+    def wait(self, timeout: float | None = None) -> bool:
+        self._thread.join(timeout)
+        return self.finished
+
+    @property
+    def status(self) -> str:
+        """One line for the screen: what is happening now."""
+        if self.error is not None:
+            return f"Could not build it: {self.error}"
+        if self.course is not None:
+            return f"Built in {self.seconds:.0f} s"
+        if self.cancelled:
+            return f"Stopping after hole {self.hole} (it is kept for next time)…"
+        if self.hole == 0:
+            return "Looking for holes already built…"
+        return f"Building hole {self.hole} of {self.total}…"

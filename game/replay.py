@@ -7,6 +7,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from polygolf.engine.golf.holes import Course, load_all_courses
+from polygolf.engine.golf.nine import COURSE_ID as RANDOM_NINE
+from polygolf.engine.golf.nine import load_nine
 from polygolf.game.record import ReplayError, RoundRecord, fingerprint, load_record
 from polygolf.game.session import Round, RoundPlay
 
@@ -19,6 +21,9 @@ def load_for_replay(path: Path) -> tuple[RoundRecord, Course]:
     record = load_record(path)
     courses, _ = load_all_courses()
     course = next((c for c in courses if c.id == record.course), None)
+    seed = record.course.removeprefix(f"{RANDOM_NINE}-")
+    if course is None and record.course.startswith(f"{RANDOM_NINE}-") and seed.isdigit():
+        course = load_nine(int(seed))  # a Random nine: the one built in the data folder, if it still is
     if course is None:
         raise ReplayError(f"{path}: course {record.course!r} is not in this game's content")
     if fingerprint(course) != record.fingerprint:

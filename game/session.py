@@ -10,7 +10,7 @@ from pathlib import Path
 from polygolf import __version__
 from polygolf.engine.golf.holes import Course, Hole, load_all_courses
 from polygolf.engine.golf.nine import COURSE_ID as RANDOM_NINE
-from polygolf.engine.golf.nine import course_name, load_nine, new_seed
+from polygolf.engine.golf.nine import load_nine, new_seed
 from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.loading.yamlsource import ContentError
@@ -391,7 +391,7 @@ class Game:
 
     def settings(self) -> dict[str, object]:
         return {"theme": self.theme.name, "shape": {"label": self.shape_label, "spec": self.shape.model_dump(
-            mode="json", exclude_none=True)}, "course": self.course.id if self.course else None,
+            mode="json", exclude_none=True)}, "course": RANDOM_NINE if self.random_chosen else self.course.id,
             "players": self.players, "volume": self.sound.volume, "guide_seen": self.guide_seen,
             "random_seed": self.random_seed}
 
@@ -446,8 +446,9 @@ class Game:
 
     @property
     def course_label(self) -> str:
-        """The chosen course's name as the menu shows it (Random nine with its seed, built or not)."""
-        return course_name(self.random_seed) if self.random_chosen else self.courses[self.course_index].name
+        """The chosen course as the menu's button names it: Random nine with its seed (built or not) as
+        'Random nine #4711', like 'Random #42' for a random polygon (the full name is too long there)."""
+        return f"Random nine #{self.random_seed}" if self.random_chosen else self.courses[self.course_index].name
 
     def next_theme(self) -> None:
         self.theme_index = (self.theme_index + 1) % len(self.themes)

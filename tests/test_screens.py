@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 import os
+import time
 from pathlib import Path
 
 import arcade
@@ -279,7 +280,6 @@ def test_f3_overlay_shows_each_systems_cost_and_keys_switch_the_preset(window, g
 
 
 def test_a_watched_hole_file_reloads_on_save_and_keeps_the_ball(window, game, tmp_path, shots_dir):
-    import time
 
     from polygolf.engine.golf.holes import Course, load_hole_file
     from polygolf.game.watch import FileWatcher, HoleReloader
@@ -473,3 +473,74 @@ def test_f11_switches_fullscreen_and_back(window, game):
     assert window.fullscreen is before
     window.set_size(1280, 720)
     send(window, "on_resize", 1280, 720)
+
+
+def test_random_nine_is_built_with_its_progress_shown_then_played_with_its_seed_on_screen(window, game, shots_dir,
+                                                                                        monkeypatch):
+    """Menu with Random nine chosen (its seed on the Course button, New seed under it), the build
+    screen ("Building hole 3 of 9…"), then the hole with the seed in the HUD, and the scorecard."""
+    import threading
+    from types import SimpleNamespace
+
+    from polygolf.engine.golf import nine
+    from polygolf.game.views.build import BuildView
+
+    gate = threading.Semaphore(0)
+
+    def held_proof(*_args, **_kwargs):
+        def prove(hole):  # the golfer's stand-in: sinks every hole, once the test lets it
+            assert gate.acquire(timeout=30)
+            return SimpleNamespace(sunk=True, estimated_par=3, best_strokes=2, seconds=0.0)
+        return prove
+
+    monkeypatch.setattr(nine, "golfer_proof", held_proof)
+    game.guide_seen = True
+    flow = ScreenFlow(window, game)
+    flow.menu()
+    while not game.random_chosen:
+        click(window, "course")
+    game.random_seed, game.random_nine = 4711, None
+    window.current_view.build()
+    menu = window.current_view
+    assert menu.buttons["course"].text == "Course: Random nine #4711" and "seed" in menu.buttons
+    assert_not_blank(snapshot(window, shots_dir, "menu-random-nine"), "menu")
+    click(window, "play")
+    view = window.current_view
+    assert isinstance(view, BuildView)
+    gate.release()
+    gate.release()  # holes 1 and 2 are proven; hole 3 waits
+    for _ in range(500):
+        frame(window)
+        if view.status.text == "Building hole 3 of 9…":
+            break
+        time.sleep(0.01)
+    assert view.status.text == "Building hole 3 of 9…"
+    assert_not_blank(snapshot(window, shots_dir, "build-random-nine"), "build")
+    for _ in range(60):
+        gate.release()
+    assert view.build.wait(30)
+    frame(window)
+    play = window.current_view
+    assert isinstance(play, PlayView) and play.hud_texts["course"].text == "Random nine · seed 4711"
+    assert play.hud_texts["hole"].text.startswith("Hole 1 of 9: Random 4711-1")
+    assert_not_blank(snapshot(window, shots_dir, "play-random-nine"), "play")
+    round_ = play.round
+    while not round_.over:
+        round_.finish_hole([(3, False, 0)])
+    show(window, ResultsView(game, round_, flow))
+    assert window.current_view.title.text == "Random nine · seed 4711: scorecard"
+    assert_not_blank(snapshot(window, shots_dir, "results-random-nine"), "results")
+    # New seed: another course, built when it is played; Esc on its build screen goes back to the menu.
+    flow.menu()
+    click(window, "seed")
+    assert game.random_seed != 4711 and game.random_nine is None
+    assert window.current_view.buttons["course"].text == f"Course: Random nine #{game.random_seed}"
+    click(window, "play")
+    build = window.current_view
+    assert isinstance(build, BuildView)
+    key(window, arcade.key.ESCAPE)
+    for _ in range(60):
+        gate.release()
+    assert build.build.wait(30)
+    frame(window)
+    assert isinstance(window.current_view, MenuView)

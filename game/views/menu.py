@@ -49,7 +49,9 @@ class MenuView(UIView):
             ("guide", "How to play", self.on_guide),
             ("quit", "Quit", self.on_quit),
         ):
-            button = themed_button(theme, text, height=42, clicks=self.game.sound)
+            # A long label (a long seed given on the command line) gets a smaller font rather than spilling over.
+            button = themed_button(theme, text, width=340, height=42, font_size=min(16, 16 * 26 // len(text)),
+                                   clicks=self.game.sound)
             button.on_click = action  # type: ignore[method-assign]
             column.add(button)
             self.buttons[key] = button

@@ -1,0 +1,337 @@
+"""Procedural holes and Random nine: a seed names a hole (byte-identical text), every generated hole
+loads and validates like a shipped one and keeps the placing rules, the golfer sinks it, the command
+line writes it, and Random nine is built once into the data folder and loaded from there after."""
+
+from __future__ import annotations
+
+import json
+import time
+from pathlib import Path
+from types import SimpleNamespace
+
+import pytest
+import yaml
+
+from polygolf.engine.golf import nine
+from polygolf.engine.golf.generate import (
+    GenerateError,
+    dry_route,
+    generate,
+    generate_hole,
+    plan_hole,
+    sort_patterns,
+)
+from polygolf.engine.golf.holes import load_hole, load_hole_file
+from polygolf.engine.loading.course import load_library
+from polygolf.game.cli import main
+
+SCHEMA_LINE = "# yaml-language-server: $schema=../schemas/hole.schema.json\n"
+
+
+@pytest.fixture(scope="module")
+def library():
+    return load_library()
+
+
+def instant_proof(strokes: int = 3):
+    """A stand-in for the search golfer where only the bookkeeping is tested: sinks every hole."""
+    calls = []
+
+    def prove(hole):
+        calls.append(hole.spec.name)
+        return SimpleNamespace(sunk=True, estimated_par=strokes + 1, best_strokes=strokes, seconds=0.0)
+
+    prove.calls = calls
+    return prove
+
+
+def test_the_same_seed_gives_the_same_text_and_other_seeds_other_holes(library):
+    first = generate_hole(1234, library)
+    assert generate_hole(1234, library) == first
+    assert first.startswith(SCHEMA_LINE)
+    assert "name: Random 1234-1\n" in first
+    others = {generate_hole(seed, library) for seed in (1, 2, 3, 4, 5)}
+    assert len(others) == 5 and first not in others
+    assert generate_hole(1234, library, number=2) != first  # Random nine's second hole of the seed
+
+
+@pytest.mark.parametrize("seed", [0, 7, 99, 31337])
+def test_generated_holes_validate_and_load(tmp_path, library, seed, capsys):
+    path = tmp_path / "holes" / f"random-{seed}.yaml"
+    path.parent.mkdir()
+    path.write_text(generate_hole(seed, library))
+    assert main(["validate", str(path)]) == 0, capsys.readouterr().err
+    hole = load_hole_file(path)
+    assert 3 <= len(hole.spec.tiles) <= 7
+    assert hole.spec.name == f"Random {seed}-1"
+
+
+def test_the_placing_rules_hold_over_many_seeds(library):
+    infos = {info.name: info for infos in sort_patterns(library).values() for info in infos}
+    for seed in range(40):
+        plan = plan_hole(seed, library)
+        tiles = plan.tiles
+        assert 3 <= len(tiles) <= 7
+        cells = [t.at for t in tiles]
+        assert len(set(cells)) == len(cells)  # self-avoiding
+        assert all(abs(a[0] - b[0]) + abs(a[1] - b[1]) == 1 for a, b in zip(cells, cells[1:]))  # a walk
+        assert min(c for c, _ in cells) == 0 and min(r for _, r in cells) == 0
+        for end in (tiles[0], tiles[-1]):
+            assert end.pattern == "empty" or infos[end.pattern].light, (seed, end)
+        middle = [infos[t.pattern].category for t in tiles[1:-1]]
+        assert middle.count("windmill") <= 1 and middle.count("water") <= 2, (seed, middle)
+        for tile in tiles:
+            if infos[tile.pattern].push is not None:
+                assert tile.rotate in (0, 90, 180, 270)  # a slope points along a grid direction: down, across, up
+
+
+def test_a_slope_is_turned_down_the_walk_across_it_or_up_it(library):
+    seen = set()
+    for seed in range(400):
+        if len(seen) == 3:
+            break
+        plan = plan_hole(seed, library)
+        for i, tile in enumerate(plan.tiles):
+            if tile.category != "slope":
+                continue
+            push = {0: (1, 0), 90: (0, 1), 180: (-1, 0), 270: (0, -1)}[tile.rotate]
+            out = (plan.tiles[i + 1].at[0] - tile.at[0], plan.tiles[i + 1].at[1] - tile.at[1])
+            into = (tile.at[0] - plan.tiles[i - 1].at[0], tile.at[1] - plan.tiles[i - 1].at[1])
+            seen.add("down" if push in (out, into) else "up" if (-push[0], -push[1]) in (out, into) else "across")
+    assert seen == {"down", "across", "up"}
+
+
+def test_borders_follow_the_walk_so_touching_tiles_stay_walled_off(tmp_path, library):
+    """A walk that comes back beside itself (a U) must not open a short cut between the arms."""
+    for seed in range(200):
+        plan = plan_hole(seed, library)
+        cells = [t.at for t in plan.tiles]
+        touching = [(i, j) for i in range(len(cells)) for j in range(i + 2, len(cells))
+                    if abs(cells[i][0] - cells[j][0]) + abs(cells[i][1] - cells[j][1]) == 1]
+        if touching:
+            break
+    else:
+        pytest.fail("no seed gave a walk that touches itself")
+    path = tmp_path / "u.yaml"
+    path.write_text(plan.text())
+    hole = load_hole(path, library)
+    from polygolf.engine.golf.layout import tile_path
+
+    assert len(tile_path(hole.spec, library)) == len(cells) - 1  # the way is the whole walk
+
+
+def test_the_dry_route_check_sees_water_across_the_way(tmp_path, library):
+    path = tmp_path / "wet.yaml"
+    path.write_text("name: Wet\npar: 3\ntiles:\n  - {at: [0, 0]}\n  - {at: [1, 0], pattern: pond, rotate: 90}\n"
+                    "  - {at: [2, 0]}\n")
+    hole = load_hole(path, library)  # it loads (the cup can be reached through open borders) ...
+    layout = hole.layout
+    assert not dry_route(layout, library.ball.radius, layout.tee, layout.cup)  # ... but only through water
+    path.write_text(path.read_text().replace("rotate: 90", "rotate: 0"))
+    layout = load_hole(path, library).layout
+    assert dry_route(layout, library.ball.radius, layout.tee, layout.cup)  # the lane along the north side
+
+
+def test_a_hole_the_golfer_cannot_sink_is_refused_and_the_next_draw_tried(library):
+    sunk_on = 2
+
+    def prove(hole):
+        prove.calls += 1
+        return SimpleNamespace(sunk=prove.calls == sunk_on, estimated_par=4, best_strokes=3, seconds=0.0)
+
+    prove.calls = 0
+    made = generate(55, library, prove=prove)
+    assert prove.calls == sunk_on and made.plan.draw >= 1
+    assert "par: 4\n" in made.text and "par estimated by the search golfer" in made.text
+    assert any("did not sink" in r for r in made.refused)
+
+    def never(hole):
+        return SimpleNamespace(sunk=False, estimated_par=0, best_strokes=None, seconds=0.0)
+
+    with pytest.raises(GenerateError, match="seed 55, hole 1: no acceptable hole in 3 draws, 3 of them tried"):
+        generate(55, library, prove=never, max_proofs=3)
+
+
+def test_the_search_golfer_sinks_a_generated_hole(library):
+    search = pytest.importorskip("polygolf.engine.golf.search")
+    started = time.perf_counter()
+    made = generate(2024, library, prove=lambda hole: search.prove_hole(hole, shapes=None, effort="quick",
+                                                                        knobs="fast"))
+    assert made.proof.sunk and made.proof.best_strokes is not None
+    par = yaml.safe_load(made.text)["par"]
+    assert par == made.proof.estimated_par and 1 <= par <= 20
+    assert time.perf_counter() - started < 20.0, "the quickest proof should take seconds"
+
+
+def test_generate_command_writes_a_valid_proven_hole(tmp_path, monkeypatch, capsys):
+    prove = instant_proof(strokes=2)
+    monkeypatch.setattr("polygolf.engine.golf.generate.golfer_proof", lambda *a, **k: prove)
+    out = tmp_path / "mine" / "random.yaml"
+    assert main(["generate", "--seed", "77", "--out", str(out)]) == 0
+    line = capsys.readouterr().out.strip()
+    assert line.startswith(f"{out}: Random 77-1, ") and "estimated par 3" in line and line.endswith(" s")
+    text = out.read_text()
+    assert text.splitlines()[0].startswith("# yaml-language-server: $schema=") and "hole.schema.json" in text
+    assert yaml.safe_load(text)["par"] == 3
+    assert main(["validate", str(out)]) == 0
+    again = tmp_path / "again.yaml"
+    assert main(["generate", "--seed", "77", "--out", str(again), "--hole", "1"]) == 0
+    body = [line for line in text.splitlines() if not line.startswith("# yaml-language-server")]
+    assert [line for line in again.read_text().splitlines() if not line.startswith("# yaml-")] == body
+
+
+@pytest.mark.parametrize("args, message", [
+    (["generate", "--out", "x.yaml"], "the following arguments are required: --seed"),
+    (["generate", "--seed", "-3", "--out", "x.yaml"], "'-3' is not a seed"),
+    (["generate", "--seed", "abc", "--out", "x.yaml"], "'abc' is not a seed"),
+    (["generate", "--seed", "3", "--out", "x.png"], "'x.png' is not a .yaml file"),
+    (["generate", "--seed", "3", "--out", "x.yaml", "--preset", "slow"], "invalid choice: 'slow'"),
+    (["generate", "--seed", "3", "--out", "x.yaml", "--hole", "0"], "'0' is not a hole number"),
+    (["play", "--course", "meadow", "--seed", "4"], "--seed is for --course random-nine"),
+])
+def test_bad_arguments_are_one_line_and_exit_2(args, message, capsys):
+    try:
+        code = main(args)
+    except SystemExit as exc:
+        code = exc.code
+    err = capsys.readouterr().err
+    assert code == 2 and message in err and len(err.strip().splitlines()) == 1, err
+
+
+def test_a_seed_without_a_hole_is_one_line_and_exit_1(tmp_path, monkeypatch, capsys):
+    monkeypatch.setattr("polygolf.engine.golf.generate.golfer_proof",
+                        lambda *a, **k: lambda hole: SimpleNamespace(sunk=False, estimated_par=0, best_strokes=None,
+                                                                     seconds=0.0))
+    assert main(["generate", "--seed", "5", "--out", str(tmp_path / "no.yaml")]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err[-1].startswith("polygolf: seed 5, hole 1: no acceptable hole in ")
+    assert not (tmp_path / "no.yaml").exists()
+
+
+# --- Random nine ------------------------------------------------------------------------------------
+
+def test_random_nine_is_built_once_and_loaded_from_the_data_folder(library, isolated_user_data):
+    prove = instant_proof()
+    course = nine.build_nine(31, library=library, prove=prove)
+    folder = isolated_user_data / "generated" / "nine-31"
+    assert sorted(p.name for p in folder.iterdir()) == ["courses.yaml", *(f"hole-{k}.yaml" for k in range(1, 10)),
+                                                        "nine.json"]
+    assert course.id == "random-nine-31" and course.name == "Random nine · seed 31"
+    assert [h.spec.name for h in course.playable] == [f"Random 31-{k}" for k in range(1, 10)]
+    assert len(prove.calls) >= 9
+    assert json.loads((folder / "nine.json").read_text())["generator"] == nine.GENERATOR_VERSION
+    assert main(["validate", str(folder)]) == 0
+    # Hole k is what `generate --seed 31 --hole k` draws.
+    assert (folder / "hole-4.yaml").read_text() == generate(31, library, number=4, prove=instant_proof(),
+                                                            schema=nine.schema_ref(folder)).text
+    calls = len(prove.calls)
+    started = time.perf_counter()
+    again = nine.build_nine(31, library=library, prove=prove)
+    assert len(prove.calls) == calls and time.perf_counter() - started < 2.0  # from the folder, nothing proven
+    assert [h.spec for h in again.playable] == [h.spec for h in course.playable]
+
+
+def test_a_stopped_build_goes_on_from_the_holes_written(library):
+    prove = instant_proof()
+    asked = []
+
+    def progress(k, total):
+        asked.append(k)
+
+    with pytest.raises(nine.BuildCancelled):
+        nine.build_nine(8, library=library, prove=prove, progress=progress, cancelled=lambda: len(asked) >= 3)
+    assert asked == [1, 2, 3] and nine.load_nine(8, library) is None
+    asked.clear()
+    course = nine.build_nine(8, library=library, prove=prove, progress=progress)
+    assert asked == [4, 5, 6, 7, 8, 9] and len(course.playable) == 9
+
+
+def test_another_generator_version_builds_the_course_again(library, monkeypatch):
+    prove = instant_proof()
+    nine.build_nine(9, library=library, prove=prove)
+    monkeypatch.setattr(nine, "GENERATOR_VERSION", nine.GENERATOR_VERSION + 1)
+    assert nine.load_nine(9, library) is None
+    calls = len(prove.calls)
+    nine.build_nine(9, library=library, prove=prove)
+    assert len(prove.calls) >= calls + 9
+
+
+def test_random_nine_in_the_course_choice_keeps_its_seed(library):
+    from polygolf.game.session import Game
+    from polygolf.game.store import Store
+
+    nine.build_nine(4242, library=library, prove=instant_proof())
+    game = Game.load(Store())
+    names = []
+    for _ in range(len(game.courses) + 1):
+        game.next_course()
+        names.append(game.course_label)
+    assert names[-2].startswith("Random nine #") and game.course_label == names[-1] != names[-2]
+    while not game.random_chosen:
+        game.next_course()
+    game.random_seed, game.random_nine = 4242, None
+    game.choose_random_nine(4242)
+    assert game.course is not None and game.course.id == "random-nine-4242"  # from the folder
+    game.save_settings()
+    later = Game.load(Store())
+    assert later.random_chosen and later.random_seed == 4242 and later.course.id == "random-nine-4242"
+    later.new_random_seed()
+    assert later.random_seed != 4242 and later.course is None  # built when it is played
+    round_ = game.start_round()
+    assert round_.course.name == "Random nine · seed 4242" and round_.hole_count == 9
+
+
+def test_the_build_thread_reports_progress_and_its_course(library):
+    from polygolf.game.building import NineBuild
+
+    def slow_build(seed, progress, cancelled):
+        for k in range(1, 4):
+            progress(k, 9)
+            time.sleep(0.01)
+        return "the course"
+
+    build = NineBuild(3, build=slow_build).start()
+    assert build.wait(5.0) and build.course == "the course" and build.error is None
+
+    def broken(seed, progress, cancelled):
+        raise GenerateError("seed 3, hole 1: no acceptable hole")
+
+    build = NineBuild(3, build=broken).start()
+    assert build.wait(5.0) and build.course is None and "no acceptable hole" in build.status
+
+    def endless(seed, progress, cancelled):
+        progress(2, 9)
+        while not cancelled():
+            time.sleep(0.005)
+        raise nine.BuildCancelled("stopped")
+
+    build = NineBuild(3, build=endless).start()
+    time.sleep(0.05)
+    assert build.status == "Building hole 2 of 9…"
+    build.cancel()
+    assert build.wait(5.0) and build.course is None and build.error is None
+
+
+def test_play_random_nine_builds_it_with_console_lines(library, monkeypatch, capsys):
+    from polygolf.game import app
+
+    monkeypatch.setattr(nine, "golfer_proof", lambda *a, **k: instant_proof())
+    monkeypatch.setattr(app, "make_window", lambda: None)
+    monkeypatch.setattr(app, "arcade_run", lambda: None)
+    started = []
+    monkeypatch.setattr("polygolf.game.flow.ScreenFlow.new_round", lambda self, start_at=0: started.append(
+        (self.game.course.id, start_at)))
+    assert main(["play", "--course", "random-nine", "--seed", "606", "--hole", "2"]) == 0
+    err = capsys.readouterr().err
+    assert "Random nine, seed 606: building hole 1 of 9..." in err and "building hole 9 of 9" in err
+    assert started == [("random-nine-606", 1)]
+    assert main(["play", "--course", "random-nine", "--seed", "606"]) == 0
+    assert "building" not in capsys.readouterr().err  # the second time from the data folder
+
+
+def test_generated_files_are_what_validate_and_the_schema_accept(tmp_path, library):
+    jsonschema = pytest.importorskip("jsonschema")
+    schema = json.loads((Path(__file__).resolve().parent.parent / "content" / "schemas" /
+                         "hole.schema.json").read_text())
+    for seed in (1, 2, 3):
+        jsonschema.validate(yaml.safe_load(generate_hole(seed, library)), schema)

@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import NoReturn
 
 from polygolf import __version__
+from polygolf.engine.golf.search import EFFORTS
 from polygolf.engine.loading.limits import MAX_SECONDS
 from polygolf.engine.loading.paths import content_roots
 from polygolf.engine.loading.yamlsource import ContentError
@@ -50,6 +51,12 @@ def shape_arg(text: str) -> tuple[str, object]:
         return parse_shape(text)
     except ValueError as exc:
         raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def jobs_arg(text: str) -> int:
+    if not text.strip().isdigit() or not 1 <= int(text) <= 64:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number of processes from 1 to 64")
+    return int(text)
 
 
 def players_arg(text: str) -> int:
@@ -160,8 +167,53 @@ def _validate(args: argparse.Namespace) -> int:
     count, problems = validate_paths(args.paths or content_roots())
     for problem in problems:
         print(problem, file=sys.stderr)
-    print(f"{_count(count, 'file')} checked, {_count(len(problems), 'problem')}")
+    warnings = _prove_warnings(args.paths or content_roots(), {p.file for p in problems}) if args.prove else []
+    for warning in warnings:
+        print(warning, file=sys.stderr)
+    extra = f", {_count(len(warnings), 'warning')}" if args.prove else ""
+    print(f"{_count(count, 'file')} checked, {_count(len(problems), 'problem')}{extra}")
     return 1 if problems else 0
+
+
+def _prove_warnings(paths, broken: set[str]) -> list[str]:
+    """`validate --prove`: each valid hole file proven by the search golfer; its doubts as warnings."""
+    from polygolf.engine.golf.holes import load_hole_file
+    from polygolf.engine.loading.yamlsource import line_of, load_yaml
+    from polygolf.game.tools.par import prove_all, warnings_for
+    from polygolf.game.tools.validate import _kind, content_files
+
+    files = [f for f in content_files(paths) if _kind(f) == "hole" and str(f) not in broken]
+    proofs = prove_all([load_hole_file(f) for f in files])
+    out = []
+    for path, proof in zip(files, proofs):
+        line = line_of(("par",), load_yaml(path)[1])
+        out += [f"{path}:{line}: par: warning: {text}" for text in warnings_for(proof)]
+    return out
+
+
+def _par(args: argparse.Namespace) -> int:
+    """The search golfer proves each hole and estimates its par; exit 1 if any hole is in doubt."""
+    from polygolf.game.tools.par import holes_named, prove_all, table, warnings_for
+
+    holes, broken = holes_named(args.target)
+    for problem in broken:
+        print(f"polygolf: skipped: {problem}", file=sys.stderr)
+    tty = sys.stderr.isatty() and not args.json
+
+    def done(proof) -> None:
+        if tty:
+            print(f"proved {proof.hole} in {proof.seconds:.1f} s", file=sys.stderr)
+
+    proofs = prove_all(holes, args.effort, args.preset, args.jobs, done)
+    if args.json:
+        print(json.dumps([p.row() | {"strokes": p.strokes, "seconds": round(p.seconds, 3), "shots": p.shots}
+                          for p in proofs]))
+    else:
+        print(table(proofs))
+    doubts = [f"{p.hole}: {text}" for p in proofs for text in warnings_for(p)]
+    for doubt in doubts:
+        print(f"polygolf: {doubt}", file=sys.stderr)
+    return 1 if doubts or broken else 0
 
 
 def _window(run, *args) -> int:
@@ -453,7 +505,18 @@ def build_parser() -> argparse.ArgumentParser:
 
     val = sub.add_parser("validate", help="check content files (default: the shipped and your own content)")
     val.add_argument("paths", nargs="*", help="files or folders")
+    val.add_argument("--prove", action="store_true",
+                     help="also let the search golfer play each valid hole; warn if it cannot sink it or its par "
+                          "is off by more than one (about a minute for all the shipped holes)")
     val.set_defaults(run=_validate)
+
+    par = sub.add_parser("par", help="the search golfer proves each hole can be sunk and estimates its par")
+    par.add_argument("target", help="a course (meadow), COURSE:N (meadow:9) or a hole file")
+    par.add_argument("--json", action="store_true", help="one JSON list: a row per hole")
+    par.add_argument("--effort", choices=list(EFFORTS), default="quick", help="how hard it searches (default quick)")
+    par.add_argument("--preset", choices=list(PRESETS), default="fast", help="physics preset (default fast)")
+    par.add_argument("--jobs", type=jobs_arg, default=None, help="processes (default: one a core)")
+    par.set_defaults(run=_par)
 
     bench = sub.add_parser("bench", help="measure what accuracy costs")
     bench_sub = bench.add_subparsers(dest="bench_command", required=True)

@@ -121,7 +121,8 @@ def assemble(spec: WorldSpec, knobs: Knobs | str | None = None) -> Simulation:
         for k, box in enumerate(wall.piece_aabbs):
             grid.insert((ent, k), box)
     for part in spec.kinematic:
-        body = Body(x=part.position[0], y=part.position[1], spin=part.spin)  # no inverse mass or inertia
+        # no inverse mass or inertia: nothing pushes it
+        body = Body(x=part.position[0], y=part.position[1], angle=part.angle, spin=part.spin)
         esper.create_entity(body, make_collider(part.outline, part.material), Name(part.name), *part.extras)
 
     res = Resources(config=StepConfig(knobs=knobs, effects=frozenset(effects), gravity=tuple(spec.gravity),

@@ -56,6 +56,7 @@ class KinematicPart:
     spin: float
     material: Material = field(default_factory=Material)
     extras: tuple[object, ...] = ()
+    angle: float = 0.0  # radians at the start (a windmill already turning when the world is built)
 
 
 @dataclass

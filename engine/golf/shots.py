@@ -6,6 +6,7 @@ try a thousand shots in one world and trust the one it picks."""
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 
 import esper
@@ -22,16 +23,19 @@ from polygolf.engine.physics.shot import clamp_arrow
 
 @dataclass(frozen=True)
 class Shot:
-    """A ball at rest at `start`, pushed at `grab` (offset from its centre, m) along `arrow` (m)."""
+    """A ball at rest at `start` turned `angle` (rad), pushed at `grab` (offset from its centre, m)
+    along `arrow` (m)."""
 
     start: tuple[float, float]
     arrow: tuple[float, float]
     grab: tuple[float, float] = (0.0, 0.0)
+    angle: float = 0.0
 
 
 @dataclass
 class ShotResult:
     rest: tuple[float, float]  # where the ball ended (the cup's centre if it dropped)
+    angle: float  # how it lies there (rad)
     holed: bool
     seconds: float  # game time until it dropped or came to rest (or the limit)
     penalties: int  # strokes added by water
@@ -39,16 +43,21 @@ class ShotResult:
 
 
 def simulate_shots(hole: Hole, shape: ShapeSpec, shots: list[Shot], knobs: Knobs | str = "balanced",
-                   max_seconds: float = 20.0, path: bool = False) -> list[ShotResult]:
-    """Every shot simulated to rest (or `max_seconds`) in one world; results in the shots' order."""
+                   max_seconds: float = 20.0, path: bool = False,
+                   windmills: Sequence[float] = ()) -> list[ShotResult]:
+    """Every shot simulated to rest (or `max_seconds`) in one world; results in the shots' order.
+    `windmills`: each windmill's angle when the shots are taken (rad, in the layout's order; the
+    game's windmills have turned since the hole began), else as at the start of the hole."""
     if not shots:
         return []
     alone = hole_spec(hole, shape)
     template = alone.bodies[0]
-    balls = [replace(template, name=f"shot-{k}", position=s.start, asleep=True,
+    balls = [replace(template, name=f"shot-{k}", position=s.start, angle=s.angle, asleep=True,
                      extras=(Ball(*s.start), ShotInput(), HoleState(par=hole.spec.par, max_strokes=99)))
              for k, s in enumerate(shots)]
-    sim = assemble(replace(alone, bodies=balls, collide_bodies=False), knobs)
+    turned = [replace(part, angle=angle) for part, angle in zip(alone.kinematic, windmills)]
+    sim = assemble(replace(alone, bodies=balls, kinematic=turned + alone.kinematic[len(turned):],
+                           collide_bodies=False), knobs)
     try:
         esper.switch_world(sim.world)
         rows = sorted(esper.get_components(Body, ShotInput, HoleState))  # entity order = shots' order
@@ -66,7 +75,7 @@ def simulate_shots(hole: Hole, shape: ShapeSpec, shots: list[Shot], knobs: Knobs
                     paths[k].append((body.x, body.y))
                 if done[k] is None and (state.holed or body.asleep):
                     done[k] = frames * FRAME_DT
-        return [ShotResult(rest=(body.x, body.y), holed=state.holed,
+        return [ShotResult(rest=(body.x, body.y), angle=body.angle, holed=state.holed,
                            seconds=done[k] if done[k] is not None else frames * FRAME_DT,
                            penalties=state.penalties, path=paths[k])
                 for k, (_, (body, _, state)) in enumerate(rows)]

@@ -1,9 +1,10 @@
 """Random nine built in a background thread, so its screen can show the progress and stay responsive.
 
 Why a thread and not a hole per frame: proving one hole takes seconds, and a window that draws nothing
-for seconds looks hung. Only this thread simulates while it runs (esper keeps its worlds in module
-state, so two threads must never simulate at once): the screen that shows it draws text only, and
-leaves for the menu only after the thread has stopped (`cancel` stops it between holes).
+for seconds looks hung. The thread waits on the worker processes that prove the holes
+(`engine.golf.nine.build_nine`); should it ever simulate itself (one worker), it is the only one to:
+esper keeps its worlds in module state, so two threads must never simulate at once, and the screen
+that shows the build draws text only and leaves for the menu only after the thread has stopped.
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ from polygolf.engine.golf.nine import NINE, BuildCancelled, build_nine
 class NineBuild:
     """One build of Random nine for `seed`; read `hole`, `course`, `error` and `finished` from any thread."""
 
-    def __init__(self, seed: int, build: Callable[..., Course] = build_nine) -> None:
+    def __init__(self, seed: int, build: Callable[..., Course] | None = None) -> None:
         self.seed = seed
         self.total = NINE
         self.hole = 0  # the hole being built (1-based); 0 before the first
@@ -27,7 +28,7 @@ class NineBuild:
         self.error: str | None = None
         self.started = 0.0
         self.seconds = 0.0
-        self._build = build
+        self._build = build or build_nine
         self._stop = threading.Event()
         self._thread = threading.Thread(target=self._run, name=f"random-nine-{seed}", daemon=True)
 
@@ -50,7 +51,7 @@ class NineBuild:
         self.hole, self.total = hole, total
 
     def cancel(self) -> None:
-        """Stop after the hole being built (it is kept for next time)."""
+        """Stop soon: the workers are stopped, the holes finished are kept for next time."""
         self._stop.set()
 
     @property
@@ -73,7 +74,7 @@ class NineBuild:
         if self.course is not None:
             return f"Built in {self.seconds:.0f} s"
         if self.cancelled:
-            return f"Stopping after hole {self.hole} (it is kept for next time)…"
+            return "Stopping (the holes finished are kept for next time)…"
         if self.hole == 0:
             return "Looking for holes already built…"
         return f"Building hole {self.hole} of {self.total}…"

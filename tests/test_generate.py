@@ -4,6 +4,7 @@ line writes it, and Random nine is built once into the data folder and loaded fr
 
 from __future__ import annotations
 
+import functools
 import json
 import time
 from pathlib import Path
@@ -153,11 +154,12 @@ def test_a_hole_the_golfer_cannot_sink_is_refused_and_the_next_draw_tried(librar
 
 
 def test_the_search_golfer_sinks_a_generated_hole(library):
-    search = pytest.importorskip("polygolf.engine.golf.search")
-    started = time.perf_counter()
-    made = generate(2024, library, prove=lambda hole: search.prove_hole(hole, shapes=None, effort="quick",
-                                                                        knobs="fast"))
-    assert made.proof.sunk and made.proof.best_strokes is not None
+    from polygolf.engine.golf.search import PROOF_SHAPES, prove_hole
+
+    started = time.perf_counter()  # the quickest proof: one shape, quick effort, fast preset
+    made = generate(2024, library, prove=lambda hole: prove_hole(hole, shapes=PROOF_SHAPES[:1], effort="quick",
+                                                                 knobs="fast"))
+    assert made.proof.sunk and made.proof.best_strokes is not None and made.proof.strokes[0] is not None
     par = yaml.safe_load(made.text)["par"]
     assert par == made.proof.estimated_par and 1 <= par <= 20
     assert time.perf_counter() - started < 20.0, "the quickest proof should take seconds"
@@ -231,6 +233,36 @@ def test_random_nine_is_built_once_and_loaded_from_the_data_folder(library, isol
     assert [h.spec for h in again.playable] == [h.spec for h in course.playable]
 
 
+def sinks_everything(hole):
+    """The golfer's stand-in in worker processes (a module-level function, so it can be sent there)."""
+    return SimpleNamespace(sunk=True, estimated_par=3, best_strokes=2, seconds=0.0)
+
+
+def test_worker_processes_build_the_same_course_and_stop_when_asked(library):
+    asked = []
+    started = time.perf_counter()
+    with pytest.raises(nine.BuildCancelled):
+        nine.build_nine(12, library=library, prove=sinks_everything, workers=2, progress=lambda k, n: asked.append(k),
+                        cancelled=lambda: time.perf_counter() - started > 0.2)
+    assert asked[0] == 1 and nine.load_nine(12, library) is None
+    course = nine.build_nine(12, library=library, prove=sinks_everything, workers=2)
+    alone = nine.build_nine(13, library=library, prove=sinks_everything)
+    folder = nine.nine_folder(12)
+    assert [h.spec.name for h in course.playable] == [f"Random 12-{k}" for k in range(1, 10)]
+    assert len(alone.playable) == 9
+    assert (folder / "hole-5.yaml").read_text() == generate(12, library, number=5, prove=sinks_everything,
+                                                            schema=nine.schema_ref(folder)).text
+
+
+def sinks_nothing(hole):
+    return SimpleNamespace(sunk=False, estimated_par=0, best_strokes=None, seconds=0.0)
+
+
+def test_a_hole_no_worker_can_make_is_an_error_not_a_hang(library):
+    with pytest.raises(GenerateError, match=r"seed 14, hole \d: no acceptable hole"):
+        nine.build_nine(14, library=library, prove=sinks_nothing, workers=2)
+
+
 def test_a_stopped_build_goes_on_from_the_holes_written(library):
     prove = instant_proof()
     asked = []
@@ -240,10 +272,10 @@ def test_a_stopped_build_goes_on_from_the_holes_written(library):
 
     with pytest.raises(nine.BuildCancelled):
         nine.build_nine(8, library=library, prove=prove, progress=progress, cancelled=lambda: len(asked) >= 3)
-    assert asked == [1, 2, 3] and nine.load_nine(8, library) is None
+    assert asked == [1, 2, 3] and nine.load_nine(8, library) is None  # stopped while hole 3 was to be made
     asked.clear()
     course = nine.build_nine(8, library=library, prove=prove, progress=progress)
-    assert asked == [4, 5, 6, 7, 8, 9] and len(course.playable) == 9
+    assert asked == [3, 4, 5, 6, 7, 8, 9] and len(course.playable) == 9
 
 
 def test_another_generator_version_builds_the_course_again(library, monkeypatch):
@@ -315,7 +347,7 @@ def test_the_build_thread_reports_progress_and_its_course(library):
 def test_play_random_nine_builds_it_with_console_lines(library, monkeypatch, capsys):
     from polygolf.game import app
 
-    monkeypatch.setattr(nine, "golfer_proof", lambda *a, **k: instant_proof())
+    monkeypatch.setattr(nine, "build_nine", functools.partial(nine.build_nine, prove=instant_proof()))
     monkeypatch.setattr(app, "make_window", lambda: None)
     monkeypatch.setattr(app, "arcade_run", lambda: None)
     started = []

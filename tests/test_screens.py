@@ -4,6 +4,7 @@ pixels, and a whole 9-hole round played by scripted shots through the mouse."""
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 import time
@@ -487,13 +488,13 @@ def test_random_nine_is_built_with_its_progress_shown_then_played_with_its_seed_
 
     gate = threading.Semaphore(0)
 
-    def held_proof(*_args, **_kwargs):
+    def held_proof():
         def prove(hole):  # the golfer's stand-in: sinks every hole, once the test lets it
             assert gate.acquire(timeout=30)
             return SimpleNamespace(sunk=True, estimated_par=3, best_strokes=2, seconds=0.0)
         return prove
 
-    monkeypatch.setattr(nine, "golfer_proof", held_proof)
+    monkeypatch.setattr("polygolf.game.building.build_nine", functools.partial(nine.build_nine, prove=held_proof()))
     game.guide_seen = True
     flow = ScreenFlow(window, game)
     flow.menu()

@@ -33,6 +33,7 @@ import numpy as np
 
 from polygolf.engine.golf.holes import Hole, load_hole
 from polygolf.engine.golf.layout import HoleLayout, layout_hole
+from polygolf.engine.golf.search import HoleProof, prove_hole
 from polygolf.engine.loading.course import (
     OPPOSITE,
     SIDES,
@@ -363,7 +364,7 @@ def dry_route(layout: HoleLayout, radius: float, start: tuple[float, float], goa
 
 # --- drawing until one is good --------------------------------------------------------------------
 
-Prove = Callable[[Hole], object]  # returns a search.HoleProof: .sunk, .estimated_par, .best_strokes, .seconds
+Prove = Callable[[Hole], HoleProof]  # the golfer's proof: .sunk, .estimated_par, .best_strokes, .seconds
 
 
 @dataclass(slots=True)
@@ -374,7 +375,7 @@ class Generated:
     text: str
     plan: HolePlan
     hole: Hole
-    proof: object | None
+    proof: HoleProof | None
     seconds: float
     refused: list[str] = field(default_factory=list)
 
@@ -439,10 +440,10 @@ def schema_ref(folder: Path) -> str:
 
 
 def golfer_proof(knobs: str = "fast", effort: str = "quick") -> Prove:
-    """The search golfer as a `prove` function: does it sink the hole, and in how many strokes."""
-    from polygolf.engine.golf.search import prove_hole
+    """The search golfer as a `prove` function: does it sink the hole (with every shape it tries),
+    and in how many strokes."""
 
-    def prove(hole: Hole):
+    def prove(hole: Hole) -> HoleProof:
         return prove_hole(hole, shapes=None, effort=effort, knobs=knobs)
 
     return prove

@@ -15,9 +15,11 @@ from __future__ import annotations
 
 import hashlib
 import json
+import multiprocessing
 import os
 import random
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from pathlib import Path
 
 from polygolf.engine.golf.generate import Prove, generate, golfer_proof, schema_ref
@@ -103,12 +105,67 @@ def load_nine(seed: int, library: TileLibrary | None = None) -> Course | None:
     return course
 
 
+def _make_hole(job: tuple[int, int, TileLibrary, Prove | None, str]) -> tuple[int, str, dict]:
+    """Hole k of the seed, drawn and proven (in a worker process when the golfer is the real one)."""
+    seed, k, library, prove, schema = job
+    made = generate(seed, library, number=k, prove=prove or golfer_proof(NINE_KNOBS, NINE_EFFORT), schema=schema)
+    proof = made.proof
+    return k, made.text, {"name": made.plan.name, "draw": made.plan.draw, "tiles": len(made.plan.tiles),
+                          "par": made.plan.par if proof is None else int(proof.estimated_par),
+                          "best_strokes": None if proof is None else proof.best_strokes,
+                          "seconds": round(made.seconds, 2)}
+
+
+def _made(jobs: list, workers: int, cancelled: Callable[[], bool]) -> Iterator[tuple[int, str, dict]]:
+    """The holes as they are made: here one by one, or `workers` processes at a time (each a fresh
+    interpreter, "spawn": nothing of a window or its threads is copied into it; a worker that dies
+    is an error here, not a hang). Stopping kills the workers; a hole is only kept once it is whole."""
+    if workers <= 1:
+        for job in jobs:
+            if cancelled():
+                raise BuildCancelled(f"stopped before hole {job[1]} of {NINE}")
+            yield _make_hole(job)
+        return
+    pool = ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn"))
+    whole = False
+    try:
+        pending = {pool.submit(_make_hole, job) for job in jobs}
+        while pending:
+            finished, pending = wait(pending, timeout=0.1, return_when=FIRST_COMPLETED)
+            for future in finished:
+                yield future.result()
+            if pending and cancelled():
+                raise BuildCancelled("stopped")
+        whole = True
+    finally:
+        if whole:
+            pool.shutdown()
+        else:
+            _kill(pool)
+
+
+def _kill(pool: ProcessPoolExecutor) -> None:
+    """Stop the workers now, mid-proof (a proof can take many seconds)."""
+    terminate = getattr(pool, "terminate_workers", None)  # Python 3.14
+    if terminate is not None:
+        terminate()
+        return
+    processes = list((getattr(pool, "_processes", None) or {}).values())
+    pool.shutdown(wait=False, cancel_futures=True)
+    for process in processes:
+        process.terminate()
+    for process in processes:
+        process.join(5)
+
+
 def build_nine(seed: int, *, library: TileLibrary | None = None, prove: Prove | None = None,
                progress: Callable[[int, int], None] | None = None,
-               cancelled: Callable[[], bool] | None = None) -> Course:
-    """The course of `seed`: from the cache, else generated and proven hole by hole (`progress(k, 9)`
-    before hole k is drawn; `cancelled()` asked between holes: BuildCancelled). Raises GenerateError
-    if a hole cannot be made, OSError if the data folder cannot be written."""
+               cancelled: Callable[[], bool] | None = None, workers: int | None = None) -> Course:
+    """The course of `seed`: from the data folder, else generated and proven, in `workers` processes
+    at once (default: one a core for the real golfer; a given `prove`, here, unless `workers` says).
+    `progress(k, 9)` says hole k is being made (k - 1 are done); `cancelled()` is asked while it
+    works (then BuildCancelled; the holes finished are kept). Raises GenerateError if a hole cannot
+    be made, OSError if the data folder cannot be written."""
     library = library or load_library()
     cached = load_nine(seed, library)
     if cached is not None:
@@ -119,24 +176,20 @@ def build_nine(seed: int, *, library: TileLibrary | None = None, prove: Prove | 
     manifest = _read_manifest(folder)
     if not _same_build(manifest, wanted):
         manifest = wanted
-    prove = prove or golfer_proof(NINE_KNOBS, NINE_EFFORT)
     schema = schema_ref(folder)
-    for k in range(1, NINE + 1):
-        path = folder / f"hole-{k}.yaml"
-        if str(k) in manifest["holes"] and path.exists():
-            continue
-        if cancelled is not None and cancelled():
-            raise BuildCancelled(f"stopped before hole {k} of {NINE}")
-        if progress is not None:
-            progress(k, NINE)
-        made = generate(seed, library, number=k, prove=prove, schema=schema)
-        _write(path, made.text)
-        proof = made.proof
-        manifest["holes"][str(k)] = {"name": made.plan.name, "draw": made.plan.draw, "tiles": len(made.plan.tiles),
-                                     "par": made.plan.par if proof is None else int(proof.estimated_par),
-                                     "best_strokes": getattr(proof, "best_strokes", None),
-                                     "seconds": round(made.seconds, 2)}
+    todo = [k for k in range(1, NINE + 1) if not (str(k) in manifest["holes"] and (folder / f"hole-{k}.yaml").exists())]
+    done = NINE - len(todo)
+    workers = min(len(todo), workers or (1 if prove is not None else os.cpu_count() or 1))
+    if todo and progress is not None:
+        progress(done + 1, NINE)
+    for k, text, entry in _made([(seed, k, library, prove, schema) for k in todo], workers,
+                                cancelled or (lambda: False)):
+        _write(folder / f"hole-{k}.yaml", text)
+        manifest["holes"][str(k)] = entry
         _write(folder / "nine.json", json.dumps(manifest, indent=1, sort_keys=True) + "\n")
+        done += 1
+        if done < NINE and progress is not None:
+            progress(done + 1, NINE)
     holes = ", ".join(f"hole-{k}" for k in range(1, NINE + 1))
     _write(folder / "courses.yaml", f"# Random nine, seed {seed}: made by the game; delete the folder to build it "
                                     f"again.\ncourses:\n  - name: {course_name(seed)}\n    holes: [{holes}]\n")

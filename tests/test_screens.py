@@ -508,6 +508,9 @@ def test_random_nine_is_built_with_its_progress_shown_then_played_with_its_seed_
     click(window, "play")
     view = window.current_view
     assert isinstance(view, BuildView)
+    from polygolf.game.views.build import DRAW_RATE
+
+    assert window._draw_rate == DRAW_RATE  # drawn slowly, so the workers have the cores
     gate.release()
     gate.release()  # holes 1 and 2 are proven; hole 3 waits
     for _ in range(500):
@@ -523,6 +526,7 @@ def test_random_nine_is_built_with_its_progress_shown_then_played_with_its_seed_
     frame(window)
     play = window.current_view
     assert isinstance(play, PlayView) and play.hud_texts["course"].text == "Random nine · seed 4711"
+    assert window._draw_rate == pytest.approx(1 / 60)  # and back at full rate to play
     assert play.hud_texts["hole"].text.startswith("Hole 1 of 9: Random 4711-1")
     assert_not_blank(snapshot(window, shots_dir, "play-random-nine"), "play")
     round_ = play.round

@@ -14,6 +14,8 @@ from polygolf.game.views.navigation import Navigator, window_key
 from polygolf.game.views.widgets import themed_button, title
 
 BAR = (560, 22)  # pixels
+DRAW_RATE = 1 / 10  # s between frames while building: software OpenGL drawing 60 a second would take a
+# good part of a core from the workers proving the holes, and a progress line needs no more
 
 
 class BuildView(UIView):
@@ -40,6 +42,15 @@ class BuildView(UIView):
         anchor.add(self.back, anchor_x="center_x", anchor_y="bottom", align_y=60)
         self.ui.add(anchor)
         self.buttons = {"menu": self.back}
+
+    def on_show_view(self) -> None:
+        self.saved_draw_rate = getattr(self.window, "_draw_rate", 1 / 60)
+        self.window.set_draw_rate(DRAW_RATE)
+        super().on_show_view()
+
+    def on_hide_view(self) -> None:
+        self.window.set_draw_rate(self.saved_draw_rate)
+        super().on_hide_view()
 
     def on_update(self, delta_time: float) -> None:
         build = self.build

@@ -234,7 +234,7 @@ def _slope_rotation(rng: random.Random, push: tuple[float, float], entry: str | 
     up = sorted({OPPOSITE[side] for side in travel}, key=SIDES.index)
     across = [side for side in SIDES if side not in down and side not in up]
     aims = [(kind, sides) for kind, sides in (("down", down), ("across", across), ("up", up)) if sides]
-    kind, sides = _weighted(rng, aims, [SLOPE_AIMS[k] for k, _ in aims])
+    _kind, sides = _weighted(rng, aims, [SLOPE_AIMS[k] for k, _ in aims])
     side = rng.choice(sides)
     target = math.degrees(math.atan2(STEP[side][1], STEP[side][0]))
     return round((target - math.degrees(math.atan2(push[1], push[0]))) / 90.0) % 4 * 90

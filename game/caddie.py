@@ -8,9 +8,10 @@ and the shot preview. Plain Python on a `RoundPlay`, so a headless test drives t
   `SHOW_SECONDS`, then shot through `RoundPlay.shoot`, the player's own path, so it is recorded and
   replayed like any shot.
 - `ShotPreview` simulates the shot being aimed with the game's physics (`simulate_shots`, one ball, the
-  windmills as they stand) up to its first contact, inline: a path costs 3 ms (median; 25 ms at
-  worst, a long roll on a slope) at the hole's preset, so it is worked out again at most every
-  `PREVIEW_INTERVAL`, and only when the arrow changed noticeably.
+  windmills as they stand) up to its first contact, inline: a path costs 3–5 ms (median; 9–11 ms
+  at the 90th percentile, 35–42 ms at worst, a long roll on a slope; benchmarks/bench_caddie.py) at
+  the hole's preset, so it is worked out again only when the arrow changed noticeably, at most every
+  `PREVIEW_INTERVAL` and never more than `PREVIEW_SHARE` of the time.
 
 The search sees only the ball being played (other players' balls are not in its world); the preview
 has them as walls where they rest, which is exact up to the first contact, where it stops.
@@ -40,6 +41,7 @@ HINT_WHEN_OFF = "good"  # H with the Hint setting off asks for this skill
 PREVIEW_INTERVAL = 0.1  # s: a new preview path at most this often
 PREVIEW_SECONDS = 4.0  # game time a preview follows the ball at most
 PREVIEW_CHANGE = 0.03  # m the arrow's tip or grab point must move for a new path
+PREVIEW_SHARE = 0.25  # of the time, at most, spent working previews out (a slow path waits longer)
 
 
 Situation = tuple  # (hole, turn, strokes, penalties, x, y, angle): what an answer is valid for
@@ -219,7 +221,8 @@ class ShotPreview:
         True if it did."""
         now = time.perf_counter() if now is None else now
         key = (grab[0], grab[1], grab[0] + arrow[0], grab[1] + arrow[1])
-        if self._key is not None and (now - self._when < PREVIEW_INTERVAL
+        wait = max(PREVIEW_INTERVAL, self.cost / PREVIEW_SHARE)
+        if self._key is not None and (now - self._when < wait
                                       or max(abs(a - b) for a, b in zip(key, self._key)) < PREVIEW_CHANGE):
             return False
         started = time.perf_counter()

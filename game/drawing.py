@@ -323,7 +323,7 @@ def dotted_path(points: Sequence[polygon.Vec], theme: Theme, contact: polygon.Ve
         length = math.hypot(bx - ax, by - ay)
         while ahead <= length:
             x, y = ax + (bx - ax) * ahead / length, ay + (by - ay) * ahead / length
-            shapes.append(create_ellipse_filled(x, y, 2 * size + 0.06, 2 * size + 0.06, (*dark[:3], 170),
+            shapes.append(create_ellipse_filled(x, y, 2 * size + 0.07, 2 * size + 0.07, (*dark[:3], 210),
                                                 num_segments=10))
             shapes.append(create_ellipse_filled(x, y, 2 * size, 2 * size, (*light[:3], 235), num_segments=10))
             ahead += spacing

@@ -183,3 +183,52 @@ def test_a_ball_wedged_in_a_v_groove_comes_to_rest(preset):
         sim.run(1.0)
         assert ball.asleep and ball.y == y  # no creep
         assert sim.metrics.max_penetration <= LINEAR_SLOP + 0.01
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_a_heavy_block_squeezes_a_small_square_out_instead_of_into_the_wall(preset):
+    """Before shock propagation: 129, 131 and 69 mm of overlap (fast, balanced, accurate)."""
+    with scene_sim("heavy-crush", preset) as sim:
+        ball, block = sim.body("ball"), sim.body("block")
+        assert block.mass / ball.mass > 3000
+        energy = sim.metrics.initial_energy
+        sim.run(2.0)
+        assert sim.metrics.max_penetration <= LINEAR_SLOP
+        assert abs(ball.y) > 0.3  # out of the block's way, along the wall (x = -1.0)
+        assert ball.x - 0.1 * math.sqrt(0.5) > -1.0 - LINEAR_SLOP  # its face (a square turned flat)
+        assert sim.kinetic_energy() < 0.05 * energy  # inelastic materials: the block is stopped, nothing gained
+        assert sim.metrics.max_energy_rise <= 1e-6 * energy
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_a_heavy_piston_stops_at_a_square_it_cannot_squeeze_out(preset):
+    """Before shock propagation: 128, 130 and 33 mm of overlap (fast, balanced, accurate)."""
+    with scene_sim("piston-crush", preset) as sim:
+        piston = sim.body("piston")
+        sim.run(2.0)
+        assert sim.metrics.max_penetration <= LINEAR_SLOP
+        assert piston.x - 0.6 > -1.0 + 0.1 * math.sqrt(2.0) - LINEAR_SLOP  # short of the end wall by the square
+        assert abs(piston.vx) < 0.1
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_a_ball_passing_2mm_above_a_free_block_touches_neither(preset):
+    """The gap test between bodies. Before it: at accurate the ball left at (3.84, 2.65) m/s spinning
+    -15.4 rad/s, and knocked the block away."""
+    with scene_sim("ghost-pass", preset) as sim:
+        ball, block = sim.body("ball"), sim.body("block")
+        sim.run(0.5)
+        assert ball.x > 1.5  # past the block's far corner
+        assert (ball.vx, ball.vy, ball.spin) == pytest.approx((8.0, 0.0, 0.0), abs=1e-9)
+        assert (block.vx, block.vy, block.spin) == pytest.approx((0.0, 0.0, 0.0), abs=1e-9)
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_a_body_dropped_8mm_onto_another_rests_touching_it(preset):
+    """Before the gap test between bodies it stayed 8.0 mm up, on the contact margin."""
+    with scene_sim("stack-drop", preset) as sim:
+        sim.run(1.5)
+        bottom, top = sim.body("bottom"), sim.body("top")
+        gap = top.y - bottom.y - 2 * 0.2 * math.sqrt(0.5)
+        assert top.asleep and bottom.asleep
+        assert -LINEAR_SLOP <= gap <= LINEAR_SLOP, gap

@@ -142,11 +142,15 @@ SCENE_PIPELINES = {
     "hover-drop": ["integrate", "spin", "gravity", "ccd", *CONTACT],
     "body-tunnel": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
     "plate-tunnel": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
+    "heavy-crush": ["integrate", "spin", "ccd", *CONTACT],
+    "ghost-pass": ["integrate", "spin", "ccd", *CONTACT, "restitution"],
+    "stack-drop": ["integrate", "spin", "gravity", "ccd", *CONTACT],
+    "piston-crush": ["integrate", "spin", "ccd", *CONTACT],
     "v-groove": ["integrate", "spin", "gravity", "ccd", *CONTACT, "restitution"],
     "dog-leg-rail": ["integrate", "spin", "drag", "ccd", *CONTACT, "restitution", "cup"],
 }
 FRICTION = {"v-groove", "corner", "deep-overlap", "fast-spin", "pile", "resting-contact", "ghost-corner", "hover-drop",
-            "dog-leg-rail"}
+            "dog-leg-rail", "heavy-crush", "piston-crush", "ghost-pass", "stack-drop"}
 
 
 @pytest.mark.parametrize("name", sorted(SCENE_PIPELINES))

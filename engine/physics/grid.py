@@ -44,6 +44,9 @@ class SpatialGrid:
             for cy in range(y0, y1 + 1):
                 self._cells[cx, cy].append((item, box))
 
+    def __len__(self) -> int:
+        return len(self._items)
+
     def clear(self) -> None:
         self._cells.clear()
         self._large.clear()

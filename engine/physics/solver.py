@@ -83,14 +83,99 @@ def solve_island(manifolds: list[Manifold], knobs: Knobs, dt: float, friction: b
     else:
         _iterate(manifolds, knobs.iterations, friction)
 
+    chain = shock_chain(manifolds)
+    if chain:
+        propagate_shock(chain)
     if knobs.position_correction == "split":
         for _ in range(knobs.position_iterations):
             solve_split(manifolds, dt, POSITION_BETA, LINEAR_SLOP, MAX_CORRECTION)
+        if chain:
+            propagate_shock(chain, dt, POSITION_BETA, LINEAR_SLOP, MAX_CORRECTION)
         apply_pushes(manifolds, dt)
     elif knobs.position_correction == "ngs":
         for _ in range(knobs.position_iterations):
             solve_ngs(manifolds, POSITION_BETA, LINEAR_SLOP, MAX_CORRECTION)
     return cold_restart
+
+
+def shock_chain(manifolds: list[Manifold]) -> list[tuple[Manifold, bool]]:
+    """Touching contacts between bodies at different distances from the ground (a wall or a
+    windmill, at 0), nearest the ground first, each with whether its A is the body nearer the ground.
+    Distance is counted in contacts: 1 = touches the ground. Empty unless some dynamic body
+    touches another and, through it, the ground (a free pile, or a ball alone on a wall, needs none)."""
+    level: dict[int, int] = {}
+    links: dict[int, list[Manifold]] = {}
+    for m in manifolds:  # every manifold the narrowphase kept is solved as touching
+        a, b = m.body_a, m.body_b
+        if a.inv_mass == 0.0 and b.inv_mass > 0.0:
+            level[id(b)] = 1
+        elif b.inv_mass == 0.0 and a.inv_mass > 0.0:
+            level[id(a)] = 1
+        elif a.inv_mass > 0.0 and b.inv_mass > 0.0:
+            links.setdefault(id(a), []).append(m)
+            links.setdefault(id(b), []).append(m)
+    if not links or not level:
+        return []  # no body between another and the ground: nothing to propagate
+    frontier = list(level)
+    while frontier:
+        nearer = []
+        for key in frontier:
+            for m in links.get(key, ()):
+                other = id(m.body_b) if id(m.body_a) == key else id(m.body_a)
+                if other not in level:
+                    level[other] = level[key] + 1
+                    nearer.append(other)
+        frontier = nearer
+    def depth(body) -> int | None:
+        return 0 if body.inv_mass == 0.0 else level.get(id(body))
+
+    chain = []
+    for k, m in enumerate(manifolds):
+        da, db = depth(m.body_a), depth(m.body_b)
+        if da is not None and db is not None and da != db:
+            chain.append((min(da, db), k, m, da < db))
+    return [(m, a_nearer) for _, _, m, a_nearer in sorted(chain, key=lambda c: c[:2])]
+
+
+def propagate_shock(chain: list[tuple[Manifold, bool]], dt: float = 0.0, beta: float = 0.0, slop: float = 0.0,
+                    max_push: float = 0.0) -> None:
+    """Shock propagation (Guendelman, Bridson and Fedkiw 2003), after the Gauss-Seidel sweeps: from
+    the ground outwards, each body nearer the ground is taken as immovable and the farther one alone
+    is stopped from closing on it. Sequential impulses converge slowly when a heavy body presses a
+    light one against a wall (the light one is squeezed into the wall); this pass lets the wall's
+    resistance reach the heavy body through the light one. It only ever stops an approach, so a
+    converged solve is left as it is.
+
+    With `dt` it acts on the split-impulse pseudo-velocities instead (the overlap's push targets),
+    so an overlap already made is pushed out on the far body's side."""
+    pushes = dt > 0.0
+    for m, a_is_grounded in chain:
+        free = m.body_b if a_is_grounded else m.body_a
+        sign = 1.0 if a_is_grounded else -1.0  # an impulse along n pushes B away from A
+        nx, ny = m.nx, m.ny
+        for p in m.points:
+            if pushes:
+                vn = _push_velocity(m, p.ra_x, p.ra_y, p.rb_x, p.rb_y)
+                target = min(beta * max(-(p.separation + slop), 0.0), max_push) / dt
+            else:
+                dvx, dvy = _relative_velocity(m, p.ra_x, p.ra_y, p.rb_x, p.rb_y)
+                vn, target = dvx * nx + dvy * ny, 0.0
+            if vn >= target:
+                continue
+            rx, ry = (p.rb_x, p.rb_y) if a_is_grounded else (p.ra_x, p.ra_y)
+            rn = rx * ny - ry * nx
+            k = free.inv_mass + free.inv_inertia * rn * rn
+            lam = sign * (target - vn) / k
+            px, py = lam * nx, lam * ny
+            if pushes:
+                s = free.scratch
+                s.push_x += free.inv_mass * px
+                s.push_y += free.inv_mass * py
+                s.push_spin += free.inv_inertia * (rx * py - ry * px)
+            else:
+                free.vx += free.inv_mass * px
+                free.vy += free.inv_mass * py
+                free.spin += free.inv_inertia * (rx * py - ry * px)
 
 
 def _iterate(manifolds: list[Manifold], iterations: int, friction: bool) -> None:

@@ -73,10 +73,11 @@ def pair_time_of_impact(
     start_a: tuple[float, float, float], end_a: tuple[float, float, float],
     piece_b: tuple[Vec, ...], normals_b: tuple[Vec, ...], reach_b: float,
     start_b: tuple[float, float, float], end_b: tuple[float, float, float],
-    target: float, tolerance: float, allowance: float,
+    target: float, tolerance: float, allowance: float, at_start: list[float] | None = None,
 ) -> float | None:
     """The same for two pieces that both move (two bodies): every axis turns with its body, so every
-    axis takes the bound on their relative motion, |dA - dB| + |ΔθA|·RA + |ΔθB|·RB."""
+    axis takes the bound on their relative motion, |dA - dB| + |ΔθA|·RA + |ΔθB|·RB. `at_start`: the
+    separations at the start poses, if already measured (they do not depend on the motion)."""
     rate = (math.hypot(end_a[0] - start_a[0] - end_b[0] + start_b[0], end_a[1] - start_a[1] - end_b[1] + start_b[1])
             + abs(end_a[2] - start_a[2]) * reach_a + abs(end_b[2] - start_b[2]) * reach_b)
     if rate <= 0.0:
@@ -92,7 +93,7 @@ def pair_time_of_impact(
         return (_axis_separations(va, _pose_normals(normals_a, aa), vb)
                 + _axis_separations(vb, _pose_normals(normals_b, ab), va))
 
-    return _advance(separations, [rate] * (len(piece_a) + len(piece_b)), target, tolerance, allowance)
+    return _advance(separations, [rate] * (len(piece_a) + len(piece_b)), target, tolerance, allowance, at_start)
 
 
 def _axis_separations(verts: list[Vec] | tuple[Vec, ...], normals, others: list[Vec] | tuple[Vec, ...]
@@ -101,10 +102,11 @@ def _axis_separations(verts: list[Vec] | tuple[Vec, ...], normals, others: list[
     return [min((ox - vx) * nx + (oy - vy) * ny for ox, oy in others) for (nx, ny), (vx, vy) in zip(normals, verts)]
 
 
-def _advance(separations, rates: list[float], target: float, tolerance: float, allowance: float) -> float | None:
+def _advance(separations, rates: list[float], target: float, tolerance: float, allowance: float,
+             at_start: list[float] | None = None) -> float | None:
     """Conservative advancement over t in [0, 1]: the first t at which the separating-axis distance
     comes within `target` (see time_of_impact for `allowance`), or None."""
-    seps = separations(0.0)
+    seps = separations(0.0) if at_start is None else at_start
     # Already touching (sliding along the wall, say): only sinking `allowance` deeper counts.
     level = target if max(seps) >= target + tolerance else min(max(seps), target) - allowance
     t = 0.0
@@ -128,3 +130,38 @@ def reaches(collider, body, wall: tuple[Vec, ...], wall_normals: tuple[Vec, ...]
     return any(time_of_impact(piece, collider.normals[i], collider.piece_reach[i], start, end, wall, wall_normals,
                               -GAP_TOLERANCE, GAP_TOLERANCE / 2, 0.0) is not None
                for i, piece in enumerate(collider.pieces))
+
+
+def pair_reaches(collider_a, a, collider_b, b, dt: float, gap: float = 0.0, may_halt_a: bool = True,
+                 may_halt_b: bool = True) -> bool:
+    """The same for two bodies: whether they would press into each other (by more than
+    GAP_TOLERANCE) within dt, moving on as they are, or with either one halted (if `may_halt_` it:
+    it has something else to meet). The solve that follows may stop a body against something else (a
+    light ball the heavy block drives into a wall); a kept gap between bodies that then part costs
+    nothing, as the solver only stops approach. `gap` (their separation now, if known) rules out at
+    once bodies too slow to close it."""
+    turn_a, turn_b = abs(a.spin) * collider_a.radius, abs(b.spin) * collider_b.radius
+    start_a, start_b = (a.x, a.y, a.angle), (b.x, b.y, b.angle)
+    end_a = (a.x + a.vx * dt, a.y + a.vy * dt, a.angle + a.spin * dt)
+    end_b = (b.x + b.vx * dt, b.y + b.vy * dt, b.angle + b.spin * dt)
+    # Each motion, with the most it can close the gap by (no point moves farther); too little: skip it.
+    motions = [((end_a, end_b), math.hypot(a.vx - b.vx, a.vy - b.vy) + turn_a + turn_b)]
+    if may_halt_a:
+        motions.append(((start_a, end_b), math.hypot(b.vx, b.vy) + turn_b))
+    if may_halt_b:
+        motions.append(((end_a, start_b), math.hypot(a.vx, a.vy) + turn_a))
+    motions = [m for m, speed in motions if speed * dt >= gap + GAP_TOLERANCE and m != (start_a, start_b)]
+    if not motions:
+        return False
+    for i, piece_a in enumerate(collider_a.pieces):
+        for j, piece_b in enumerate(collider_b.pieces):
+            va = _pose_vertices(piece_a, *start_a)
+            vb = _pose_vertices(piece_b, *start_b)
+            at_start = (_axis_separations(va, _pose_normals(collider_a.normals[i], a.angle), vb)
+                        + _axis_separations(vb, _pose_normals(collider_b.normals[j], b.angle), va))
+            for moved_a, moved_b in motions:
+                if pair_time_of_impact(piece_a, collider_a.normals[i], collider_a.piece_reach[i], start_a, moved_a,
+                                       piece_b, collider_b.normals[j], collider_b.piece_reach[j], start_b, moved_b,
+                                       -GAP_TOLERANCE, GAP_TOLERANCE / 2, 0.0, at_start) is not None:
+                    return True
+    return False

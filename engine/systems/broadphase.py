@@ -34,15 +34,25 @@ class BroadphaseProcessor(esper.Processor):
         if len(bodies) > 1:
             grid = self._dynamic_grid
             grid.clear()
-            for ent, (body, col) in bodies:
-                r = col.radius + CONTACT_MARGIN
-                grid.insert(ent, (body.x - r, body.y - r, body.x + r, body.y + r))
-            meet = self.config.collide_bodies
-            for ea, eb in grid.pairs():
-                a, b = esper.component_for_entity(ea, Body), esper.component_for_entity(eb, Body)
-                if (_moving(a) or _moving(b)) and (meet or not (a.inv_mass and b.inv_mass)):
-                    pairs.append((ea, eb))
-        self.candidates.pairs = pairs
+            if self.config.collide_bodies:
+                for ent, (body, col) in bodies:
+                    r = col.radius + CONTACT_MARGIN
+                    grid.insert(ent, (body.x - r, body.y - r, body.x + r, body.y + r))
+                for ea, eb in grid.pairs():
+                    if _moving(esper.component_for_entity(ea, Body)) or _moving(esper.component_for_entity(eb, Body)):
+                        pairs.append((ea, eb))
+            else:  # bodies meet kinematic ones only: index those, look each moving body up (K shots: no K²)
+                for ent, (body, col) in bodies:
+                    if body.inv_mass == 0.0:
+                        r = col.radius + CONTACT_MARGIN
+                        grid.insert(ent, (body.x - r, body.y - r, body.x + r, body.y + r))
+                if grid:
+                    for ent, (body, col) in bodies:
+                        if body.inv_mass and not body.asleep:
+                            r = col.radius + CONTACT_MARGIN
+                            pairs += [(min(ent, k), max(ent, k))
+                                      for k in grid.query((body.x - r, body.y - r, body.x + r, body.y + r))]
+        self.candidates.pairs = sorted(pairs)  # one order whichever way they were found
 
 
 def _moving(body: Body) -> bool:

@@ -68,12 +68,23 @@ class CCDProcessor(esper.Processor):
         """Pairs of bodies whose swept boxes overlap and that move fast relative to each other."""
         grid = self._swept
         grid.clear()
-        for ent, (body, col) in bodies:
-            s, r = body.scratch, col.radius + TOI_TARGET
-            grid.insert(ent, (min(s.x0, body.x) - r, min(s.y0, body.y) - r, max(s.x0, body.x) + r,
-                              max(s.y0, body.y) + r))
         meet = self.config.collide_bodies
-        for ea, eb in grid.pairs():
+
+        def swept(body: Body, col: Collider) -> tuple[float, float, float, float]:
+            s, r = body.scratch, col.radius + TOI_TARGET
+            return min(s.x0, body.x) - r, min(s.y0, body.y) - r, max(s.x0, body.x) + r, max(s.y0, body.y) + r
+
+        if meet:
+            for ent, (body, col) in bodies:
+                grid.insert(ent, swept(body, col))
+            candidates = grid.pairs()
+        else:  # bodies meet kinematic ones only: index those, look each moving body up (K shots: no K²)
+            for ent, (body, col) in bodies:
+                if not body.inv_mass:
+                    grid.insert(ent, swept(body, col))
+            candidates = [(min(ent, k), max(ent, k)) for ent, (body, col) in bodies
+                          if body.inv_mass and not body.asleep and grid for k in grid.query(swept(body, col))]
+        for ea, eb in candidates:
             a, col_a = esper.component_for_entity(ea, Body), esper.component_for_entity(ea, Collider)
             b, col_b = esper.component_for_entity(eb, Body), esper.component_for_entity(eb, Collider)
             if not (a.inv_mass or b.inv_mass) or (a.inv_mass and b.inv_mass and not meet):

@@ -1,0 +1,160 @@
+"""The search golfer: route distances, shots it chooses played for real, proofs of every shipped hole,
+and `polygolf par` / `validate --prove`."""
+
+from __future__ import annotations
+
+import json
+import math
+import random
+import shutil
+from pathlib import Path
+
+import pytest
+
+from polygolf.engine.golf.golfer import golfer_for
+from polygolf.engine.golf.holes import load_all_courses, load_hole_file
+from polygolf.engine.golf.layout import point_clearance
+from polygolf.engine.golf.play import HolePlay
+from polygolf.engine.golf.search import (
+    PROOF_SHAPES,
+    RouteMap,
+    SearchGolfer,
+    Shot,
+    estimate_par,
+    play_out,
+    prove_hole,
+    spoil,
+)
+from polygolf.engine.golf.shots import simulate_shots
+from polygolf.engine.loading.paths import HOLES_DIR
+from polygolf.game.cli import main
+
+HEXAGON = PROOF_SHAPES[0]
+
+
+def _holes() -> dict[str, object]:
+    courses = load_all_courses()[0]
+    return {f"{c.id}:{n + 1}": h for c in courses if c.id != "collision-test" for n, h in enumerate(c.playable)}
+
+
+HOLES = _holes()
+
+
+def test_route_distance_is_the_walk_round_the_walls() -> None:
+    straight, dog_leg = HOLES["meadow:1"], HOLES["meadow:2"]
+    route = RouteMap(straight.layout, straight.library.ball.radius)
+    tee, cup = straight.layout.tee, straight.layout.cup
+    assert route(*cup) < 0.4  # within the grid's step
+    assert route(*tee) == pytest.approx(math.dist(tee, cup), abs=0.3)  # a clear line: as the crow flies
+    bent = RouteMap(dog_leg.layout, dog_leg.library.ball.radius)
+    tee, cup = dog_leg.layout.tee, dog_leg.layout.cup
+    # Round the corner: the legs of the L (one tile each way, less what the inner corner saves), not the diagonal.
+    assert bent(*tee) > 1.15 * math.dist(tee, cup)
+    assert bent(*tee) < sum(math.dist(a, b) for a, b in zip(dog_leg.layout.route, dog_leg.layout.route[1:]))
+
+
+def test_no_route_node_inside_a_wall() -> None:
+    hole = HOLES["meadow:9"]
+    route = RouteMap(hole.layout, hole.library.ball.radius)
+    free = route.points[route.free]
+    assert len(free) > 100
+    radius = hole.library.ball.radius
+    assert all(point_clearance(hole.layout, x, y) >= 0.6 * radius for x, y in free[::5])
+    blocked = route.points[~route.free]
+    on_green = [(x, y) for x, y in blocked if any(a <= x <= c and b <= y <= d for a, b, c, d in hole.layout.floor)]
+    assert all(point_clearance(hole.layout, x, y) < 0.6 * radius + 1e-9 for x, y in on_green[::5])
+
+
+def test_chosen_shot_played_for_real_ends_where_the_search_said() -> None:
+    """The search's verdict is the game's physics: the shots it chose, played one by one on the
+    hole's own world, end bit for bit where the search saw them end."""
+    hole = HOLES["meadow:2"]
+    golfer = SearchGolfer(hole, HEXAGON, "fast", "quick")
+    run = play_out(golfer)
+    assert run.sunk and run.strokes <= hole.spec.par
+    play = HolePlay(hole, HEXAGON, "fast")
+    try:
+        for shot, result in zip(run.shots, run.results):
+            assert (play.ball.x, play.ball.y) == shot.start
+            assert play.shoot((shot.start[0] + shot.grab[0], shot.start[1] + shot.grab[1]), shot.arrow)
+            play.step()
+            frames = 1
+            while not (play.ball_at_rest or play.state.holed) and frames < 60 * 20:
+                play.step()
+                frames += 1
+            assert play.state.holed == result.holed
+            if not result.holed:
+                assert (play.ball.x, play.ball.y, play.ball.angle) == (*result.rest, result.angle)
+        assert play.state.holed and play.state.score == run.strokes
+    finally:
+        play.close()
+
+
+def test_it_banks_when_the_straight_line_is_blocked() -> None:
+    """Sandbox's warm-up has no clear line from tee to cup; the golfer sinks it in one off a wall."""
+    hole = HOLES["sandbox:1"]
+    assert not golfer_for(hole).clear(hole.layout.tee, hole.layout.cup)
+    choice = SearchGolfer(hole, HEXAGON, "fast", "quick").search(hole.layout.tee)
+    assert choice.result.holed
+    path = simulate_shots(hole, HEXAGON, [choice.shot], "fast", path=True)[0].path
+    headings = [math.atan2(b[1] - a[1], b[0] - a[0]) for a, b in zip(path, path[1:]) if math.dist(a, b) > 1e-3]
+    turns = [abs(math.remainder(b - a, math.tau)) for a, b in zip(headings, headings[1:])]
+    assert max(turns) > math.radians(30)  # a bounce, not a curve
+
+
+def test_skill_spoils_the_aim_and_exact_skill_does_not() -> None:
+    shot = Shot((1.0, 2.0), (3.0, 0.0), (0.0, 0.1), 0.3)
+    assert spoil(shot, 1.0, random.Random(1)) == shot
+    wild = [spoil(shot, 0.0, random.Random(seed)) for seed in range(200)]
+    headings = [math.degrees(math.atan2(s.arrow[1], s.arrow[0])) for s in wild]
+    assert 4.0 < (sum(h * h for h in headings) / len(headings)) ** 0.5 < 10.0  # about 7 degrees astray
+    assert spoil(shot, 0.0, random.Random(5)) == spoil(shot, 0.0, random.Random(5))
+
+
+def test_estimated_par_is_the_median_plus_a_human_stroke() -> None:
+    assert estimate_par([1, 1, 2], 10) == 2
+    assert estimate_par([3, 4, 5], 10) == 5
+    assert estimate_par([3, None, None], 10) == 11
+
+
+@pytest.mark.parametrize("name", sorted(HOLES))
+def test_every_shipped_hole_is_sunk_and_its_par_is_within_one(name: str) -> None:
+    hole = HOLES[name]
+    proof = prove_hole(hole, shapes=[HEXAGON], effort="quick", knobs="fast")
+    assert proof.sunk, f"{name}: not sunk in {hole.library.max_strokes} strokes"
+    assert abs(proof.estimated_par - hole.spec.par) <= 1, f"{name}: par {hole.spec.par}, estimate {proof.estimated_par}"
+
+
+def test_par_command_json(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["par", "meadow:1", "--json", "--jobs", "1"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert [r["hole"] for r in rows] == ["straight"]
+    row = rows[0]
+    assert {"hole", "name", "par", "estimated_par", "best_strokes", "sunk"} <= set(row)
+    assert row["sunk"] is True and row["best_strokes"] == 1 and row["par"] == 2
+
+
+def test_a_wrong_par_is_a_warning(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    shutil.copy(HOLES_DIR / "tiles.yaml", tmp_path / "tiles.yaml")
+    text = (HOLES_DIR / "straight.yaml").read_text().replace("par: 2", "par: 7")
+    assert "par: 7" in text
+    hole_file = tmp_path / "far.yaml"
+    hole_file.write_text(text)
+    assert load_hole_file(hole_file).spec.par == 7
+    assert main(["par", str(hole_file), "--jobs", "1"]) == 1
+    out = capsys.readouterr()
+    assert "straight" not in out.err and "par 7 is more than 1 from the estimated par 2" in out.err
+    assert main(["validate", "--prove", str(hole_file)]) == 0  # a warning, not an error
+    err = capsys.readouterr().err.strip().splitlines()
+    line = next(n for n, text in enumerate(text.splitlines(), 1) if text.startswith("par:"))
+    assert err == [f"{hole_file}:{line}: par: warning: par 7 is more than 1 from the estimated par 2"]
+
+
+def test_par_refuses_what_is_not_a_hole(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["par", "nowhere"]) == 2
+    assert "no course 'nowhere'" in capsys.readouterr().err
+    assert main(["par", "meadow:42"]) == 2
+    assert "meadow has holes 1 to 9" in capsys.readouterr().err
+    with pytest.raises(SystemExit) as exit_:
+        main(["par", "meadow", "--jobs", "0"])
+    assert exit_.value.code == 2

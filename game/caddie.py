@@ -8,8 +8,8 @@ and the shot preview. Plain Python on a `RoundPlay`, so a headless test drives t
   `SHOW_SECONDS`, then shot through `RoundPlay.shoot`, the player's own path, so it is recorded and
   replayed like any shot.
 - `ShotPreview` simulates the shot being aimed with the game's physics (`simulate_shots`, one ball, the
-  windmills as they stand) up to its first contact, inline: a path costs 3–5 ms (median; 9–11 ms
-  at the 90th percentile, 35–42 ms at worst, a long roll on a slope; benchmarks/bench_caddie.py) at
+  windmills as they stand) up to its first contact, inline: a path costs 3–4 ms (median; 5–7 ms
+  at the 90th percentile, 24–26 ms at worst, a long roll on a slope; benchmarks/bench_caddie.py) at
   the hole's preset, so it is worked out again only when the arrow changed noticeably, at most every
   `PREVIEW_INTERVAL` and never more than `PREVIEW_SHARE` of the time.
 

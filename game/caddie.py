@@ -77,8 +77,7 @@ class Caddie:
         self.problem = ""  # the last search's failure, for the screen to say once
         self.failed_for: Situation | None = None  # not asked again here (a worker that cannot start)
         self.latency = 0.0  # s the last answer took, asked to collected
-        if hint != "off" or any(is_computer(n) for n in session.players):
-            golfers.warm_up()
+        self.warm = hint == "off" and not any(is_computer(n) for n in session.players)  # True: nothing to start
 
     # -- reading ----------------------------------------------------------------------------------
 
@@ -137,6 +136,9 @@ class Caddie:
     def update(self, dt: float) -> bool:
         """Collect an answer, ask a question the situation calls for, and play the computer's shot once
         it has been shown. True if the computer shot this frame."""
+        if not self.warm:  # the first frame, not the constructor: a rendered still starts no process
+            self.golfers.warm_up()
+            self.warm = True
         now = self.situation()
         self._collect(now)
         if now is None:

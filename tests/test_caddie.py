@@ -87,6 +87,27 @@ def test_the_preview_starts_at_the_ball_and_ends_at_the_first_contact(meadow):
         play.close()
 
 
+def test_the_preview_knows_where_the_windmills_stand_now():
+    hole = find_course(load_all_courses()[0], "hazards").holes[5]  # Windmill
+    play = HolePlay(hole, PENTAGON, "fast")
+    try:
+        assert play.windmills
+        play.step(97)  # the windmills have turned since the hole began; the ball rests on the tee
+        ball = (play.ball.x, play.ball.y)
+        cup = hole.layout.cup
+        d = math.dist(ball, cup)
+        arrow = (4.0 * (cup[0] - ball[0]) / d, 4.0 * (cup[1] - ball[1]) / d)  # hard, through the sweep
+        path, contact = preview_path(play, PENTAGON, ball, arrow)
+        as_at_start, = simulate_shots(hole, PENTAGON, [Shot(ball, arrow)], "fast", path=True, until_contact=True)
+        assert contact is not None and as_at_start.contact_at != contact  # a blade where it stands now
+        play.shoot(ball, arrow)
+        for point in path[1:]:
+            play.step()
+            assert (play.ball.x, play.ball.y) == point
+    finally:
+        play.close()
+
+
 def test_the_preview_stops_at_another_players_ball(meadow):
     hole = meadow.holes[0]
     play = HolePlay(hole, PENTAGON, "fast", players=2)

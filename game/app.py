@@ -4,6 +4,10 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from polygolf.game.session import Game
 
 WINDOW_SIZE = (1280, 720)
 TITLE = "PolyGolf"
@@ -48,8 +52,9 @@ def run_menu() -> None:
     from polygolf.game.flow import ScreenFlow
     from polygolf.game.session import Game
 
-    ScreenFlow(make_window(), Game.load()).menu()
-    arcade_run()
+    game = Game.load()
+    ScreenFlow(make_window(), game).menu()
+    arcade_run(game)
 
 
 def _game_for(course: str | None, hole: int, theme: str | None, shape, only=None, players: list[str] | None = None,
@@ -112,7 +117,7 @@ def run_play(course: str, hole: int, theme: str | None, shape: str | None, prese
     game.preset = preset
     game.guide_seen = True
     ScreenFlow(make_window(), game).new_round(hole - 1)
-    arcade_run()
+    arcade_run(game)
 
 
 def run_hole_file(path: Path, theme: str | None, shape, preset: str, watch: bool) -> None:
@@ -135,11 +140,11 @@ def run_hole_file(path: Path, theme: str | None, shape, preset: str, watch: bool
         watcher = FileWatcher(path, path.parent / "tiles.yaml")
         arcade.schedule(HoleReloader(flow, path, watcher), 0.25)
         try:
-            arcade_run()
+            arcade_run(game)
         finally:
             watcher.close()
         return
-    arcade_run()
+    arcade_run(game)
 
 
 def run_replay(path: Path) -> None:
@@ -155,13 +160,19 @@ def run_replay(path: Path) -> None:
     session = replay_session(record, course)
     game.round, game.session = session.round, session
     ScreenFlow(make_window(), game).watch_round(record, session)
-    arcade_run()
+    arcade_run(game)
 
 
-def arcade_run() -> None:
+def arcade_run(game: Game | None = None) -> None:
+    """Run the window until it closes; then the game's round and golfer process go (a search the
+    worker is running would otherwise hold up the exit)."""
     import arcade
 
-    arcade.run()
+    try:
+        arcade.run()
+    finally:
+        if game is not None:
+            game.close()
 
 
 def render_hole(course: str, hole: int, theme: str | None, shape: str | None, out: Path,

@@ -111,6 +111,16 @@ def yaml_arg(text: str) -> Path:
     return Path(text)
 
 
+def skill_arg(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    if not (math.isfinite(value) and 0.0 <= value <= 1.0):
+        raise argparse.ArgumentTypeError(f"{text} is not a skill from 0 to 1")
+    return value
+
+
 def png_arg(text: str) -> Path:
     if not text.lower().endswith(".png"):
         raise argparse.ArgumentTypeError(f"{text!r} is not a .png file")
@@ -289,10 +299,13 @@ def _generate(args: argparse.Namespace) -> int:
 
 
 def _autoplay(args: argparse.Namespace) -> int:
-    """The scripted golfer plays a whole round headless; saved and recorded like any round."""
-    from polygolf.engine.golf.golfer import golfer_for
+    """The search golfer plays a whole round headless (every shot searched with the round's own physics,
+    at `--skill`); saved and recorded like any round."""
+    import random
+
     from polygolf.engine.golf.holes import find_course
     from polygolf.game.app import build_nine_here
+    from polygolf.game.golfer_process import SEARCH_EFFORT, Question, answer, origin_of
     from polygolf.game.session import RANDOM_NINE, Game, par_text, strokes_text
 
     game = Game.load()
@@ -312,11 +325,14 @@ def _autoplay(args: argparse.Namespace) -> int:
     game.preset = args.preset
     game.start_round()
     session = game.session
-    golfers = {}
+    rng = random.Random(0)  # the same round every time for the same arguments
 
     def plan(hole):
-        golfer = golfers.setdefault(hole.hole.id, golfer_for(hole.hole))
-        return golfer.plan((hole.ball.x, hole.ball.y))
+        ball = hole.ball
+        shot = answer(Question(hole.hole, game.shape, (ball.x, ball.y), ball.angle,
+                               tuple(w.angle for w in hole.windmills), args.skill, rng.randrange(2 ** 31),
+                               args.preset, SEARCH_EFFORT))
+        return origin_of(shot), shot.arrow
 
     session.play_out(plan)
     replay = game.save_round(session)
@@ -475,13 +491,15 @@ def build_parser() -> argparse.ArgumentParser:
                      help="the preset the golfer proves it at (default fast, as Random nine)")
     gen.set_defaults(run=_generate)
 
-    auto = sub.add_parser("autoplay", help="the built-in golfer plays a round headless; saved and recorded")
+    auto = sub.add_parser("autoplay", help="the search golfer plays a round headless; saved and recorded")
     auto.add_argument("--course", default="meadow", help="course name (default meadow)")
     auto.add_argument("--players", type=players_arg, default=None, help="1 to 4 golfers taking turns (default 1)")
     auto.add_argument("--names", type=names_arg, default=None, help="their names: Ann,Bob")
     auto.add_argument("--preset", choices=list(PRESETS), default="balanced")
     auto.add_argument("--shape", type=shape_arg, default=None, help="pentagon, star-5-2, random-SEED ...")
     auto.add_argument("--seed", type=seed_arg, default=None, help="with --course random-nine: the course's seed")
+    auto.add_argument("--skill", type=skill_arg, default=1.0,
+                      help="how well it aims, 0 (about 7 degrees and 20%% of power astray) to 1 (exact, the default)")
     auto.set_defaults(run=_autoplay)
 
     scores = sub.add_parser("scores", help="the bests kept: per hole and per course, for each ball shape")

@@ -281,10 +281,10 @@ def power_colour(theme: Theme, fraction: float) -> RGBA:
 
 
 def draw_arrow(origin: polygon.Vec, tip: polygon.Vec, theme: Theme, centre: polygon.Vec | None = None,
-               spin: float = 0.0, ball_radius: float = 0.5) -> float:
+               spin: float = 0.0, ball_radius: float = 0.5, alpha: int = 255) -> float:
     """The aiming arrow from where the ball was grabbed to the pointer: longer, wider and darker with
     power; around the ball, an arc whose length and direction show the spin the grab point gives.
-    Returns the power fraction (1.0 = the strongest shot)."""
+    `alpha` < 255 draws it faintly (the aim hint). Returns the power fraction (1.0 = the strongest shot)."""
     arrow = (tip[0] - origin[0], tip[1] - origin[1])
     length = math.hypot(*arrow)
     if length < 1e-6:
@@ -294,8 +294,9 @@ def draw_arrow(origin: polygon.Vec, tip: polygon.Vec, theme: Theme, centre: poly
     shown = clamp_arrow(arrow) or arrow
     end = (origin[0] + shown[0], origin[1] + shown[1])
     colour = power_colour(theme, fraction)
-    width = 0.08 + 0.16 * fraction
     outline = shade(colour, -0.6) if sum(colour[:3]) > 380 else shade(colour, 0.6)
+    colour, outline = (*colour[:3], alpha), (*outline[:3], alpha)
+    width = 0.08 + 0.16 * fraction
     head = 0.35 + 0.25 * fraction
     base = (end[0] - ux * head * 0.8, end[1] - uy * head * 0.8)  # the shaft stops inside the head
     arcade.draw_line(origin[0], origin[1], base[0], base[1], outline, width + 0.06)
@@ -307,6 +308,32 @@ def draw_arrow(origin: polygon.Vec, tip: polygon.Vec, theme: Theme, centre: poly
     if centre is not None and abs(spin) > 0.05 * MAX_SHOT_SPIN:
         draw_spin(centre, spin, ball_radius, colour, outline)
     return fraction
+
+
+def dotted_path(points: Sequence[polygon.Vec], theme: Theme, contact: polygon.Vec | None = None,
+                spacing: float = 0.35, size: float = 0.07) -> ShapeElementList:
+    """The shot preview, built once per path (one batched draw a frame): dots every `spacing` m along
+    `points` in the arrow's light colour, each ringed in a dark one so they read on any surface, and
+    a ring on the point where the ball first strikes something."""
+    light = theme.rgba("arrow")
+    dark = shade(light, -0.7) if sum(light[:3]) > 380 else shade(light, 0.7)
+    shapes: ShapeElementList = ShapeElementList()
+    ahead = spacing  # distance along the path to the next dot (none on the ball's centre)
+    for (ax, ay), (bx, by) in zip(points, points[1:]):
+        length = math.hypot(bx - ax, by - ay)
+        while ahead <= length:
+            x, y = ax + (bx - ax) * ahead / length, ay + (by - ay) * ahead / length
+            shapes.append(create_ellipse_filled(x, y, 2 * size + 0.07, 2 * size + 0.07, (*dark[:3], 210),
+                                                num_segments=10))
+            shapes.append(create_ellipse_filled(x, y, 2 * size, 2 * size, (*light[:3], 235), num_segments=10))
+            ahead += spacing
+        ahead -= length
+    if contact is not None:
+        x, y = contact
+        ring = 0.5
+        shapes.append(create_ellipse_outline(x, y, ring, ring, (*dark[:3], 170), 0.1, num_segments=32))
+        shapes.append(create_ellipse_outline(x, y, ring, ring, (*light[:3], 230), 0.05, num_segments=32))
+    return shapes
 
 
 def draw_spin(centre: polygon.Vec, spin: float, ball_radius: float, colour: RGBA, outline: RGBA) -> None:

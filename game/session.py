@@ -15,6 +15,7 @@ from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.engine.physics.polygon import Vec
+from polygolf.game.golfer_process import GolferProcess
 from polygolf.game.record import BallEnd, HoleRecord, Input, RoundRecord, fingerprint
 from polygolf.game.shapes import CATALOGUE
 from polygolf.game.sound import ArcadePlayer, SoundBoard
@@ -50,6 +51,18 @@ def strokes_text(n: int) -> str:
 def penalty_text(n: int) -> str:
     """'(+1 penalty stroke)', '(+2 penalty strokes)', or '' for none."""
     return f"(+{n} penalty stroke{'' if n == 1 else 's'})" if n else ""
+
+
+COMPUTER = "CPU"  # a player named so ("CPU 2" for a second one) is played by the search golfer
+HINTS = {"off": None, "rough": 0.5, "good": 0.8, "exact": 1.0}  # the aim hint's setting -> its golfer's skill
+SKILLS = {"rough": 0.5, "good": 0.8, "exact": 1.0}  # the computer opponent's setting -> its skill
+
+
+def is_computer(name: str) -> bool:
+    """The computer plays a seat whose name is CPU, any case, alone or followed by more ("CPU 2"):
+    a name, so the HUD, scorecard, bests and replays all say who played without anything new."""
+    words = name.split()
+    return bool(words) and words[0].lower() == COMPUTER.lower()
 
 
 def par_text(diff: int) -> str:
@@ -185,6 +198,11 @@ class RoundPlay:
     @property
     def player_name(self) -> str:
         return self.players[self.turn]
+
+    @property
+    def computer_turn(self) -> bool:
+        """The seat whose turn it is is the computer's (live play only: a replay plays its inputs)."""
+        return self.feed is None and self.hole is not None and is_computer(self.player_name)
 
     @property
     def hole_over(self) -> bool:
@@ -375,6 +393,10 @@ class Game:
     sound: SoundBoard = field(default_factory=lambda: SoundBoard(ArcadePlayer()))
     random_seed: int = field(default_factory=new_seed)
     random_nine: Course | None = None  # the course of random_seed, once built or found built
+    hint: str = "off"  # the aim hint: a key of HINTS
+    preview: bool = True  # the dotted line of the shot being aimed, up to its first bounce
+    computer_skill: str = "good"  # a key of SKILLS
+    golfers: GolferProcess = field(default_factory=GolferProcess)  # the search golfer's process, started on demand
 
     @classmethod
     def load(cls, store: Store | None = None) -> Game:
@@ -393,6 +415,7 @@ class Game:
         return {"theme": self.theme.name, "shape": {"label": self.shape_label, "spec": self.shape.model_dump(
             mode="json", exclude_none=True)}, "course": RANDOM_NINE if self.random_chosen else self.course.id,
             "players": self.players, "volume": self.sound.volume, "guide_seen": self.guide_seen,
+            "hint": self.hint, "preview": self.preview, "computer_skill": self.computer_skill,
             "random_seed": self.random_seed}
 
     def apply_settings(self, saved: dict[str, object]) -> None:
@@ -423,6 +446,9 @@ class Game:
         if isinstance(volume, int | float) and 0.0 <= volume <= 1.0:
             self.sound.volume = float(volume)  # the sound board's volume is the one setting
         self.guide_seen = saved.get("guide_seen") is True
+        self.hint = saved["hint"] if saved.get("hint") in HINTS else self.hint
+        self.preview = saved["preview"] if isinstance(saved.get("preview"), bool) else self.preview
+        self.computer_skill = saved["computer_skill"] if saved.get("computer_skill") in SKILLS else self.computer_skill
 
     def save_settings(self) -> None:
         if self.store is not None:
@@ -504,6 +530,26 @@ class Game:
         """The players' names (their count is the number of players)."""
         self.players = list(names[:MAX_PLAYERS]) or default_names(1)
         self.save_settings()
+
+    def next_hint(self) -> None:
+        """Aim hint: off, rough, good, exact, off ..."""
+        names = list(HINTS)
+        self.hint = names[(names.index(self.hint) + 1) % len(names)]
+        self.save_settings()
+
+    def toggle_preview(self) -> None:
+        self.preview = not self.preview
+        self.save_settings()
+
+    def next_computer_skill(self) -> None:
+        names = list(SKILLS)
+        self.computer_skill = names[(names.index(self.computer_skill) + 1) % len(names)]
+        self.save_settings()
+
+    def close(self) -> None:
+        """The game is closing: the round's world and the golfer's process go."""
+        self.close_session()
+        self.golfers.close()
 
     def mark_guide_seen(self) -> None:
         if not self.guide_seen:

@@ -4,4 +4,5 @@ import sys
 
 from polygolf.game.cli import main
 
-sys.exit(main())
+if __name__ == "__main__":  # as every main module of a program that spawns processes
+    sys.exit(main())

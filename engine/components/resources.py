@@ -76,12 +76,14 @@ HEARD_LIMIT = 256  # events and impacts kept for a listener that has not drained
 class Impact:
     """Something struck a body hard enough to hear: `kind` is "shot" (the club), "wall", "bumper" or
     "body" (another body, a windmill); `speed` is the approach speed along the normal, m/s (a shot:
-    the speed it gave the ball); (x, y) where."""
+    the speed it gave the ball); (x, y) where; `bodies` the two entities that met (-1: a wall), so a
+    listener can tell whose ball it was (the shot preview's first bounce)."""
 
     kind: str
     speed: float
     x: float
     y: float
+    bodies: tuple[int, int] = (-1, -1)
 
 
 @dataclass(slots=True)
@@ -101,8 +103,8 @@ class Events:
         self.fired.append((kind, ball, amount))
         self.heard.append((kind, ball, amount))
 
-    def strike(self, kind: str, speed: float, x: float, y: float) -> None:
-        self.impacts.append(Impact(kind, speed, x, y))
+    def strike(self, kind: str, speed: float, x: float, y: float, bodies: tuple[int, int] = (-1, -1)) -> None:
+        self.impacts.append(Impact(kind, speed, x, y, bodies))
 
     def drain(self) -> tuple[list[tuple[str, int, int]], list[Impact]]:
         """The golf events and impacts since the last drain, oldest first."""

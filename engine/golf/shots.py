@@ -12,10 +12,12 @@ from dataclasses import dataclass, field, replace
 import esper
 
 from polygolf.engine.assembly.assemble import assemble
-from polygolf.engine.components import Ball, Body, HoleState, ShotInput
+from polygolf.engine.assembly.spec import WallPart
+from polygolf.engine.components import Ball, Body, HoleState, Material, ShotInput
 from polygolf.engine.golf.holes import Hole
 from polygolf.engine.golf.world import hole_spec
 from polygolf.engine.loading.scene import ShapeSpec
+from polygolf.engine.physics.polygon import Outline
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import FRAME_DT
 from polygolf.engine.physics.shot import clamp_arrow
@@ -40,14 +42,25 @@ class ShotResult:
     seconds: float  # game time until it dropped or came to rest (or the limit)
     penalties: int  # strokes added by water
     path: list[tuple[float, float]] = field(default_factory=list)  # a point a frame until then, if asked for
+    # With the path: how many of its points come before the ball first struck a wall, bumper or body
+    # (it struck during the next frame), and the point where it struck; None if it never did.
+    contact: int | None = None
+    contact_at: tuple[float, float] | None = None
 
 
 def simulate_shots(hole: Hole, shape: ShapeSpec, shots: list[Shot], knobs: Knobs | str = "balanced",
                    max_seconds: float = 20.0, path: bool = False,
-                   windmills: Sequence[float] = ()) -> list[ShotResult]:
+                   windmills: Sequence[float] = (), until_contact: bool = False,
+                   obstacles: Sequence[Outline] = ()) -> list[ShotResult]:
     """Every shot simulated to rest (or `max_seconds`) in one world; results in the shots' order.
     `windmills`: each windmill's angle when the shots are taken (rad, in the layout's order; the
-    game's windmills have turned since the hole began), else as at the start of the hole."""
+    game's windmills have turned since the hole began), else as at the start of the hole. With
+    `path`, each result also says when its ball first struck something (the impacts stage names the
+    bodies of every manifold that closed fast enough to bounce; exact while a frame has fewer than
+    `HEARD_LIMIT` impacts, i.e. for a preview, not a search's fan); `until_contact` stops following a
+    ball there (the shot preview: its path up to the first bounce, no further). `obstacles`: outlines
+    (world coordinates) of resting bodies the shots may meet, as walls: the other players' balls, for
+    a path up to its first contact (after one, a real ball would move and a wall does not)."""
     if not shots:
         return []
     alone = hole_spec(hole, shape)
@@ -56,7 +69,8 @@ def simulate_shots(hole: Hole, shape: ShapeSpec, shots: list[Shot], knobs: Knobs
                      extras=(Ball(*s.start), ShotInput(), HoleState(par=hole.spec.par, max_strokes=99)))
              for k, s in enumerate(shots)]
     turned = [replace(part, angle=angle) for part, angle in zip(alone.kinematic, windmills)]
-    sim = assemble(replace(alone, bodies=balls, kinematic=turned + alone.kinematic[len(turned):],
+    walls = alone.walls + [WallPart(tuple(outline), Material()) for outline in obstacles]
+    sim = assemble(replace(alone, bodies=balls, walls=walls, kinematic=turned + alone.kinematic[len(turned):],
                            collide_bodies=False), knobs)
     try:
         esper.switch_world(sim.world)
@@ -66,18 +80,28 @@ def simulate_shots(hole: Hole, shape: ShapeSpec, shots: list[Shot], knobs: Knobs
             shot_input.request((body.x + shot.grab[0], body.y + shot.grab[1]), arrow)
         done: list[float | None] = [None] * len(shots)
         paths: list[list[tuple[float, float]]] = [[] for _ in shots]
+        contact: list[int | None] = [None] * len(shots)
+        contact_at: list[tuple[float, float] | None] = [None] * len(shots)
+        index = {ent: k for k, (ent, _) in enumerate(rows)}
         frames = 0
+        sim.res.events.drain()
         while frames < round(max_seconds / FRAME_DT) and None in done:
             sim.step(1, measure=False)
             frames += 1
+            if path or until_contact:
+                for impact in sim.res.events.drain()[1]:
+                    for ent in impact.bodies if impact.kind != "shot" else ():
+                        k = index.get(ent)
+                        if k is not None and contact[k] is None and done[k] is None:
+                            contact[k], contact_at[k] = frames - 1, (impact.x, impact.y)
             for k, (_, (body, _, state)) in enumerate(rows):
                 if path and done[k] is None:
                     paths[k].append((body.x, body.y))
-                if done[k] is None and (state.holed or body.asleep):
+                if done[k] is None and (state.holed or body.asleep or (until_contact and contact[k] is not None)):
                     done[k] = frames * FRAME_DT
         return [ShotResult(rest=(body.x, body.y), angle=body.angle, holed=state.holed,
                            seconds=done[k] if done[k] is not None else frames * FRAME_DT,
-                           penalties=state.penalties, path=paths[k])
+                           penalties=state.penalties, path=paths[k], contact=contact[k], contact_at=contact_at[k])
                 for k, (_, (body, _, state)) in enumerate(rows)]
     finally:
         sim.close()

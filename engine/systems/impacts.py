@@ -8,7 +8,8 @@ from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 class ImpactsProcessor(esper.Processor):
     """After `resolve`: each manifold whose points were closing faster than a bounce needs is one
     impact (its fastest point's approach speed), told to whoever listens (`Events.impacts`: the
-    front end's sound). Reads the contacts only; changes nothing."""
+    front end's sound, the shot preview), naming the two entities. Reads the contacts only; changes
+    nothing."""
 
     name = "impacts"
 
@@ -24,4 +25,4 @@ class ImpactsProcessor(esper.Processor):
                 kind = "body"
             else:
                 kind = "bumper" if esper.has_component(fastest.key[0], Bumper) else "wall"
-            self.events.strike(kind, -fastest.approach_speed, fastest.x, fastest.y)
+            self.events.strike(kind, -fastest.approach_speed, fastest.x, fastest.y, (m.entity_a, m.entity_b))

@@ -39,4 +39,4 @@ class ShotProcessor(esper.Processor):
             body.spin += dspin
             shot.accepted += 1
             self.events.emit("shot", ent)
-            self.events.strike("shot", math.hypot(dvx, dvy), body.x, body.y)
+            self.events.strike("shot", math.hypot(dvx, dvy), body.x, body.y, (ent, -1))

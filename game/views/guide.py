@@ -15,8 +15,8 @@ GUIDE = """\
 Your ball is a polygon. Get it into the cup in as few strokes as you can.
 
 Shooting: when the ball has stopped, press on it, drag an arrow and let go. The arrow points where the \
-ball goes; the longer it is, the harder the shot (it grows wider and darker toward full power). Esc \
-cancels a shot.
+ball goes; the longer it is, the harder the shot (it grows wider and darker toward full power). Dots \
+show where it will go up to its first bounce (P hides them). Esc cancels a shot. Stuck? H shows a hint.
 
 Spin: where you grab the ball sets its spin. Grab it at the centre for a straight shot. Grab it off \
 centre and it turns as it goes (the arc round the ball shows which way), and a spinning polygon kicks \
@@ -29,7 +29,7 @@ Scoring: each hole has a par. After 10 strokes the ball is picked up. R puts you
 for a penalty stroke (the strokes taken stay). L shows your last shot again; Esc pauses.
 
 Friends: up to four play on one machine, in turn (one stroke each, in seat order); every ball is on \
-the green and they knock each other about. Fewest strokes wins.
+the green and they knock each other about. Fewest strokes wins. A player named CPU is the computer.
 
 View: the mouse wheel zooms, a right-drag or the arrow keys pan, 0 fits the hole. F11 fullscreen, M mute."""
 
@@ -42,7 +42,7 @@ class GuideView(UIView):
         theme = game.theme
         self.background_color = theme.rgba("background")
         self.title = title("How to play", theme, 36)
-        self.body = arcade.Text(GUIDE, 0, 0, theme.rgba("text"), 15, multiline=True, width=900,
+        self.body = arcade.Text(GUIDE, 0, 0, theme.rgba("text"), 14, multiline=True, width=1040,
                                 anchor_x="center", anchor_y="top")
         row = UIBoxLayout(vertical=False, space_between=16)
         go = themed_button(theme, "Got it" if game.guide_seen else "Got it: tee off", width=260, clicks=self.game.sound)
@@ -66,5 +66,8 @@ class GuideView(UIView):
         w, h = self.window.width, self.window.height
         self.title.position = (w / 2, h - 60)
         self.title.draw()
-        self.body.position = (w / 2, h - 110)
+        width = min(1040, w - 60)  # the whole guide above the button at 720 px; narrower windows wrap more
+        if self.body.width != width:
+            self.body.width = width
+        self.body.position = (w / 2, h - 100)
         self.body.draw()

@@ -1,6 +1,6 @@
 """The menu: Play, Environment (themes), Polygon (shapes), Random polygon, Course (the courses, then Random
-nine with its seed, and then New seed under it), Players, Names, Sound, Guide, Quit; the chosen polygon is
-drawn beside the buttons."""
+nine with its seed, and then New seed under it), Players, Names; a row of settings (Sound, the aim Hint,
+the shot Preview); Guide, Quit. The chosen polygon is drawn beside the buttons."""
 
 from __future__ import annotations
 
@@ -32,10 +32,20 @@ class MenuView(UIView):
                                     anchor_x="center", anchor_y="center", italic=True)
         self.shape_caption = arcade.Text(game.shape_label, 0, 0, theme.rgba("text"), 18, anchor_x="center",
                                          anchor_y="center")
-        # Ten buttons fit under the title at 720 px; eleven (New seed) with a little less space between.
+        # Ten rows fit under the title at 720 px; eleven (New seed) with a little less space between.
         column = UIBoxLayout(vertical=True, space_between=4 if game.random_chosen else 6)
         self.buttons = {}
         seed = [("seed", "New seed", self.on_new_seed)] if game.random_chosen else []
+        settings = UIBoxLayout(vertical=False, space_between=6)  # one row: small settings, side by side
+        for key, text, action in (
+            ("volume", f"Sound: {self.volume_label}", self.on_volume),
+            ("hint", f"Hint: {game.hint}", self.on_hint),
+            ("preview", f"Preview: {'on' if game.preview else 'off'}", self.on_preview),
+        ):
+            button = themed_button(theme, text, width=102, height=42, font_size=12, clicks=self.game.sound)
+            button.on_click = action  # type: ignore[method-assign]
+            settings.add(button)
+            self.buttons[key] = button
         for key, text, action in (
             ("play", "Play", self.on_play),
             ("theme", f"Environment: {theme.name}", self.on_theme),
@@ -45,12 +55,15 @@ class MenuView(UIView):
             *seed,
             ("players", f"Players: {len(game.players)}", self.on_players),
             ("names", "Names: " + ", ".join(game.players), self.on_names),
-            ("volume", f"Sound: {self.volume_label}", self.on_volume),
+            ("settings", None, None),
             ("guide", "How to play", self.on_guide),
             ("quit", "Quit", self.on_quit),
         ):
+            if text is None:
+                column.add(settings)
+                continue
             # A long label (a long seed given on the command line) gets a smaller font rather than spilling over.
-            button = themed_button(theme, text, width=340, height=42, font_size=min(16, 16 * 26 // len(text)),
+            button = themed_button(theme, text, height=42, font_size=min(16, 16 * 25 // len(text)),
                                    clicks=self.game.sound)
             button.on_click = action  # type: ignore[method-assign]
             column.add(button)
@@ -106,6 +119,16 @@ class MenuView(UIView):
 
     def on_volume(self, _event=None) -> None:
         self.game.sound.next_volume()
+        self.build()
+
+    def on_hint(self, _event=None) -> None:
+        """The aim hint: off, rough, good, exact (how well the suggested arrow is aimed)."""
+        self.game.next_hint()
+        self.build()
+
+    def on_preview(self, _event=None) -> None:
+        """The dotted line of the shot being aimed, on or off."""
+        self.game.toggle_preview()
         self.build()
 
     def on_guide(self, _event=None) -> None:

@@ -1,8 +1,11 @@
 """The play screen: the hole in the theme's colours, the HUD, and the shot arrow.
 
 Press on the ball and drag: the arrow shows direction and power, where you grabbed the ball sets the
-spin, release shoots, Esc cancels. R restarts the hole (back to the tee, a penalty stroke); L watches
-the last shot again; Esc (not aiming) pauses. The mouse wheel
+spin, release shoots, Esc cancels; while you drag, a dotted line shows where the ball goes up to its
+first bounce (P switches it). H asks the search golfer for a hint (the Hint setting shows one every
+turn); a player named CPU is the computer, whose arrow is shown being drawn before it shoots (the
+golfer and the preview are `game.caddie`'s). R restarts the hole (back to the tee, a penalty stroke);
+L watches the last shot again; Esc (not aiming) pauses. The mouse wheel
 zooms about the pointer, a right-drag or the arrow keys pan, 0 fits the hole again. F3 shows the frame
 rate and what each system costs a frame, in a panel the hole is fitted beside; 1, 2, 3 switch the
 preset (fast, balanced, accurate) live. F11 (fullscreen) and M (mute) work on every screen.
@@ -24,10 +27,12 @@ import arcade
 
 from polygolf.engine.golf.layout import ball_fits
 from polygolf.engine.golf.play import HolePlay
+from polygolf.game.caddie import Caddie, ShotPreview
 from polygolf.game.drawing import (
     HUD_HEIGHT,
     HoleArt,
     PlayerBallArt,
+    dotted_path,
     draw_arrow,
     draw_trail,
     draw_turn_ring,
@@ -53,6 +58,7 @@ ZOOM_RANGE = (1.0, 6.0)  # times the fitted zoom
 ZOOM_STEP = 1.15  # per wheel notch
 PAN_KEYS = {arcade.key.LEFT: (-1, 0), arcade.key.RIGHT: (1, 0), arcade.key.UP: (0, 1), arcade.key.DOWN: (0, -1)}
 PAN_STEP = 0.15  # of the visible width per arrow-key press
+HINT_ALPHA = 120  # the aim hint: the arrow drawn this faintly
 
 
 class PlayView(arcade.View):
@@ -73,6 +79,7 @@ class PlayView(arcade.View):
         self.banner = arcade.Text("", 0, 0, theme.rgba("text"), 13, anchor_x="center", anchor_y="center",
                                   multiline=True, width=900, align="center")
         self.banner_time = 0.0
+        self.hint_label = arcade.Text("", 0, 0, theme.rgba("text"), 11, anchor_x="center", anchor_y="center")
         self.overlay = False
         self.overlay_texts = [arcade.Text("", 0, 0, theme.rgba("text"), 11, font_name=("DejaVu Sans Mono", "monospace"))
                               for _ in range(OVERLAY_LINES)]
@@ -82,6 +89,9 @@ class PlayView(arcade.View):
         self.clock = FixedStep()  # game time runs on across restarts and reloads
         self.world: HolePlay | None = None
         self.session = self.session_for(game, round_)
+        self.caddie = Caddie(self.session, game.golfers, game.hint, game.computer_skill)
+        self.preview = ShotPreview()
+        self.preview_art = None  # the preview's dots, built when its path changes
         self.start_hole()
 
     @staticmethod
@@ -127,6 +137,8 @@ class PlayView(arcade.View):
     def restart_hole(self) -> None:
         """R, or Restart hole: the ball whose turn it is goes back to the tee; the strokes taken stay
         and a penalty stroke is added (no free retakes)."""
+        if self.session.computer_turn:
+            return  # the computer's ball is the computer's to restart
         if self.session.restart():
             self.aiming = False
             seat = self.world.turn
@@ -202,7 +214,8 @@ class PlayView(arcade.View):
                                        f"  ·  Par {spec.par}")
         extra = f" {penalty_text(state.penalties)}" if state.penalties else ""
         muted = "   [muted]" if self.game.sound.muted else ""
-        self.hud_texts["strokes"].text = f"{self.turn_prefix()}{strokes_text(state.score)}{extra}{muted}"
+        thinking = "  ·  thinking…" if self.caddie.thinking else ""
+        self.hud_texts["strokes"].text = f"{self.turn_prefix()}{strokes_text(state.score)}{extra}{thinking}{muted}"
         self.hud_texts["players"].text = self.scoreboard()
 
     def scoreboard(self) -> str:
@@ -225,7 +238,8 @@ class PlayView(arcade.View):
 
     def on_mouse_press(self, x: int, y: int, button: int, modifiers: int) -> None:
         world = self.world
-        if world is None or button != arcade.MOUSE_BUTTON_LEFT or not self.session.can_shoot:
+        if world is None or button != arcade.MOUSE_BUTTON_LEFT or not self.session.can_shoot \
+                or self.session.computer_turn:
             return
         wx, wy = self.to_world(x, y)
         reach = max(GRAB_SLACK * world.collider.radius, GRAB_PIXELS / self.camera.zoom)
@@ -245,6 +259,7 @@ class PlayView(arcade.View):
         self.aiming = False
         self.tip = self.to_world(x, y)
         self.session.shoot(self.grab, (self.tip[0] - self.grab[0], self.tip[1] - self.grab[1]))
+        self.clear_preview()
 
     def on_mouse_scroll(self, x: int, y: int, scroll_x: float, scroll_y: float) -> None:
         if self.world is not None and scroll_y:
@@ -256,12 +271,20 @@ class PlayView(arcade.View):
         elif symbol == arcade.key.ESCAPE:
             if self.aiming:
                 self.aiming = False
+                self.clear_preview()
             else:
                 self.flow.pause(self)
         elif symbol == arcade.key.R:
             self.restart_hole()
         elif symbol == arcade.key.L:
             self.watch_last_shot()
+        elif symbol == arcade.key.H:
+            if not self.caddie.toggle_hint():
+                self.show_banner("A hint is for your own shot, with every ball at rest", 2.0)
+        elif symbol == arcade.key.P:
+            self.game.toggle_preview()
+            self.clear_preview()
+            self.show_banner(f"Shot preview: {'on' if self.game.preview else 'off'}", 1.5)
         elif symbol == arcade.key.F3:
             self.overlay = not self.overlay
             self.system_us.clear()
@@ -306,6 +329,11 @@ class PlayView(arcade.View):
             events += stepped
             impacts += struck
         self.game.sound.hear(events, impacts, delta_time)
+        self.caddie.update(delta_time)
+        if self.caddie.problem:
+            self.show_banner(self.caddie.problem, 4.0)
+            self.caddie.problem = ""
+        self.update_preview()
         self.animate(delta_time)
         self.banner_time = max(0.0, self.banner_time - delta_time)
         self.update_hud()
@@ -313,6 +341,24 @@ class PlayView(arcade.View):
             self.finished_for += delta_time
             if self.finished_for >= FINISH_PAUSE:
                 self.finish_hole()
+
+    def update_preview(self) -> None:
+        """The dotted line for the arrow being drawn, the player's or the computer's (worked out again
+        only when the arrow changed noticeably, at most every `caddie.PREVIEW_INTERVAL`)."""
+        if self.aiming:
+            aim = self.grab, (self.tip[0] - self.grab[0], self.tip[1] - self.grab[1])
+        else:
+            aim = self.caddie.computer_arrow()
+        if aim is None or not self.game.preview or self.world is None:
+            self.clear_preview()
+        elif self.preview.update(self.world, self.session.shape, *aim):
+            path = self.preview.path
+            self.preview_art = (dotted_path(path, self.game.theme, self.preview.contact)
+                                if len(path) > 1 or self.preview.contact is not None else None)
+
+    def clear_preview(self) -> None:
+        self.preview.clear()
+        self.preview_art = None
 
     def start_animations(self, events: list[tuple[str, int, int]]) -> None:
         """A physics frame's events, seen right after it: the pose before it is where that ball was."""
@@ -376,6 +422,7 @@ class PlayView(arcade.View):
             text.draw()
 
     def finish_hole(self) -> None:
+        self.caddie.close()
         results = self.session.finish_hole()
         self.world = None
         self.flow.hole_done(results)
@@ -387,6 +434,7 @@ class PlayView(arcade.View):
 
     def close(self) -> None:
         """Let go of the hole's world (leaving the hole, or the game)."""
+        self.caddie.close()
         self.session.close()
         self.world = None
 
@@ -403,15 +451,13 @@ class PlayView(arcade.View):
             self.draw_splashes()
             self.draw_balls(alpha)
             self.hole_art.draw_flag()
-            if self.aiming:
-                arrow = (self.tip[0] - self.grab[0], self.tip[1] - self.grab[1])
-                draw_arrow(self.grab, self.tip, theme, (world.ball.x, world.ball.y),
-                           world.shot_spin(self.grab, arrow), world.collider.radius)
+            self.draw_aim(world, theme)
         self.window.default_camera.use()
         w, h = self.window.width, self.window.height
         arcade.draw_lrbt_rectangle_filled(0, w, h - HUD_HEIGHT, h, theme.rgba("panel"))
         for text in self.hud_texts.values():
             text.draw()
+        self.draw_hint_label()
         if self.banner_time > 0:
             self.draw_backed(self.banner)
         if self.overlay:
@@ -419,6 +465,35 @@ class PlayView(arcade.View):
         if self.session.hole_over:
             self.draw_finish_message(w, h)
         self.draw_ms = (time.perf_counter() - started) * 1e3
+
+    def draw_aim(self, world: HolePlay, theme) -> None:
+        """The hint (faint), the preview's dots, then the arrow being drawn: the player's or the computer's."""
+        hint = self.caddie.shown_hint()
+        if hint is not None:
+            origin = (world.ball.x + hint.grab[0], world.ball.y + hint.grab[1])
+            draw_arrow(origin, (origin[0] + hint.arrow[0], origin[1] + hint.arrow[1]), theme,
+                       (world.ball.x, world.ball.y), world.shot_spin(origin, hint.arrow), world.collider.radius,
+                       alpha=HINT_ALPHA)
+        if self.preview_art is not None:
+            self.preview_art.draw()
+        aim = ((self.grab, (self.tip[0] - self.grab[0], self.tip[1] - self.grab[1])) if self.aiming
+               else self.caddie.computer_arrow())
+        if aim is not None:
+            origin, arrow = aim
+            draw_arrow(origin, (origin[0] + arrow[0], origin[1] + arrow[1]), theme, (world.ball.x, world.ball.y),
+                       world.shot_spin(origin, arrow), world.collider.radius)
+
+    def draw_hint_label(self) -> None:
+        """'hint' beside the hint arrow's head, in screen space so it reads at any zoom."""
+        hint, world = self.caddie.shown_hint(), self.world
+        if hint is None:
+            return
+        tip = (world.ball.x + hint.grab[0] + hint.arrow[0], world.ball.y + hint.grab[1] + hint.arrow[1])
+        x, y = self.camera.project(tip)[:2]
+        length = math.hypot(*hint.arrow) or 1.0
+        self.hint_label.text = f"hint ({self.caddie.hint_level()})"
+        self.hint_label.position = (x + 26 * hint.arrow[0] / length, y + 26 * hint.arrow[1] / length + 14)
+        self.draw_backed(self.hint_label, pad=5.0)
 
     def draw_balls(self, alpha: float) -> None:
         """Every ball still on the green between its last two poses, with a ring around the ball whose

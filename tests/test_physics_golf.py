@@ -232,3 +232,40 @@ def test_a_body_dropped_8mm_onto_another_rests_touching_it(preset):
         gap = top.y - bottom.y - 2 * 0.2 * math.sqrt(0.5)
         assert top.asleep and bottom.asleep
         assert -LINEAR_SLOP <= gap <= LINEAR_SLOP, gap
+
+
+def _pinch_world(preset: str):
+    """A windmill arm (2.15 m, turning at 1.5 rad/s) whose tip passes 0.49 m from a wall, and a
+    hexagon ball 0.78 m across flat against that wall in its path: a gap the content rules refuse."""
+    from polygolf.engine.assembly.assemble import assemble
+    from polygolf.engine.assembly.spec import DynamicPart, KinematicPart, WallPart, WorldSpec
+    from polygolf.engine.components import Material, Windmill
+
+    hexagon = tuple((0.45 * math.cos(k * math.pi / 3), 0.45 * math.sin(k * math.pi / 3)) for k in range(6))
+    arm = ((-0.15, -0.15), (2.0, -0.15), (2.0, 0.15), (-0.15, 0.15))
+    wall = ((-3.0, 2.5), (3.0, 2.5), (3.0, 3.0), (-3.0, 3.0))
+    ball = DynamicPart("ball", hexagon, (0.0, 2.5 - 0.45 * math.sqrt(0.75)), 1.0, Material(0.6, 0.3), top_speed=25.0)
+    return assemble(WorldSpec("pinch", [ball], [WallPart(wall, Material())],
+                              [KinematicPart("windmill", arm, (0.0, 0.0), 1.5, extras=(Windmill(1.5),))]), preset)
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_a_windmill_never_crushes_a_ball_against_a_wall(preset):
+    """Before the stall: 19.3 mm of overlap at fast. Now the arm either stalls at the ball (it stops
+    short of it for as long as the ball lies there) or the ball is squeezed out along the wall."""
+    import esper
+
+    from polygolf.engine.components import Body, Windmill
+
+    sim = _pinch_world(preset)
+    try:
+        ball = sim.body("ball")
+        esper.switch_world(sim.world)
+        arm = next(body for _, (body, _) in esper.get_components(Body, Windmill))
+        sim.run(4.0)
+        assert sim.metrics.max_penetration <= LINEAR_SLOP
+        squeezed = abs(ball.x) > 1.0
+        stalled = arm.angle < 1.5 * 4.0 - 1.0 and ball.y == pytest.approx(2.5 - 0.45 * math.sqrt(0.75), abs=LINEAR_SLOP)
+        assert squeezed or stalled
+    finally:
+        sim.close()

@@ -4,8 +4,9 @@ import esper
 
 from polygolf.engine.components import Body, Collider, Wall
 from polygolf.engine.components.resources import Resources
+from polygolf.engine.physics.collide import separation
 from polygolf.engine.physics.grid import SpatialGrid
-from polygolf.engine.physics.settings import LINEAR_SLOP, TOI_TARGET
+from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP, TOI_TARGET
 from polygolf.engine.physics.toi import pair_time_of_impact, time_of_impact
 
 
@@ -14,7 +15,11 @@ class CCDProcessor(esper.Processor):
     or into or through another body, is moved back to its time of impact; the discrete contact that
     follows bounces it, and the time the motion lost is made up in the next substep
     (`BodyScratch.lag`), so a fast body that bounces ends up where it should rather than a substep
-    behind. Of two bodies that meet, both go back to that time (a kinematic one never does)."""
+    behind. Of two bodies that meet, both go back to that time.
+
+    A kinematic body (a windmill) goes back too when the body it meets lies against a wall: it would
+    crush it, so it stalls at the impact, standing still for the rest of the substep, and turns on
+    once the ball has got out of the way (or been shot away)."""
 
     name = "ccd"
 
@@ -45,8 +50,11 @@ class CCDProcessor(esper.Processor):
             body.x = s.x0 + t * (body.x - s.x0)
             body.y = s.y0 + t * (body.y - s.y0)
             body.angle = s.angle0 + t * (body.angle - s.angle0)
-            # The motion covered (dt + lag) this substep; the part after the impact is owed.
-            s.lag = (1.0 - t) * s.moved_for
+            if body.inv_mass:
+                # The motion covered (dt + lag) this substep; the part after the impact is owed.
+                s.lag = (1.0 - t) * s.moved_for
+            else:
+                body.spin = 0.0  # a stalled windmill: still, for the solve too; it owes nothing
             self.stats.toi_hits += 1
 
     def _first_wall_hit(self, body: Body, col: Collider) -> float:
@@ -63,6 +71,17 @@ class CCDProcessor(esper.Processor):
                 if t is not None and t < first:
                     first = t
         return first
+
+    def _against_a_wall(self, body: Body, col: Collider) -> bool:
+        """Whether the body lies within the contact margin of a wall: pushed, it cannot give way there."""
+        r = col.radius + CONTACT_MARGIN
+        pieces, normals = col.world(body.x, body.y, body.angle)
+        for wall_ent, k in self.statics.grid.query((body.x - r, body.y - r, body.x + r, body.y + r)):
+            wall = esper.component_for_entity(wall_ent, Wall)
+            if any(separation(verts, norms, wall.pieces[k], wall.normals[k]) < CONTACT_MARGIN
+                   for verts, norms in zip(pieces, normals)):
+                return True
+        return False
 
     def _body_hits(self, bodies: list, first: dict[int, float]) -> None:
         """Pairs of bodies whose swept boxes overlap and that move fast relative to each other."""
@@ -89,8 +108,8 @@ class CCDProcessor(esper.Processor):
             b, col_b = esper.component_for_entity(eb, Body), esper.component_for_entity(eb, Collider)
             if not (a.inv_mass or b.inv_mass) or (a.inv_mass and b.inv_mass and not meet):
                 continue
-            if (a.asleep or not a.inv_mass) and (b.asleep or not b.inv_mass):
-                continue
+            if not (_moving(a) or _moving(b)):
+                continue  # a resting ball is swept only against a turning windmill (which it may stall)
             # Against a kinematic body (a windmill's arm) any step beyond the slop is swept, as against
             # a wall; two dynamic bodies only when their steps could carry one half through the other
             # (cheaper in a crowd; the discrete contact then parts the overlap that is left).
@@ -113,6 +132,15 @@ class CCDProcessor(esper.Processor):
                 for ent, body in ((ea, a), (eb, b)):
                     if body.inv_mass and not body.asleep:
                         first[ent] = min(first.get(ent, 1.0), hit)
+                if kinematic:
+                    (arm, arm_ent), (ball, col) = ((a, ea), (b, col_b)) if not a.inv_mass else ((b, eb), (a, col_a))
+                    if self._against_a_wall(ball, col):
+                        first[arm_ent] = min(first.get(arm_ent, 1.0), hit)
+
+
+def _moving(body: Body) -> bool:
+    """Awake and dynamic, or kinematic and turning."""
+    return (not body.asleep and body.inv_mass > 0.0) or (body.inv_mass == 0.0 and body.spin != 0.0)
 
 
 def _travel(body: Body, col: Collider) -> float:

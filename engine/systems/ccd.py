@@ -4,7 +4,7 @@ import esper
 
 from polygolf.engine.components import Body, Collider, Wall
 from polygolf.engine.components.resources import Resources
-from polygolf.engine.physics.collide import separation
+from polygolf.engine.physics.collide import max_separation
 from polygolf.engine.physics.grid import SpatialGrid
 from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP, TOI_TARGET
 from polygolf.engine.physics.toi import pair_time_of_impact, time_of_impact
@@ -17,9 +17,9 @@ class CCDProcessor(esper.Processor):
     (`BodyScratch.lag`), so a fast body that bounces ends up where it should rather than a substep
     behind. Of two bodies that meet, both go back to that time.
 
-    A kinematic body (a windmill) goes back too when the body it meets lies against a wall: it would
-    crush it, so it stalls at the impact, standing still for the rest of the substep, and turns on
-    once the ball has got out of the way (or been shot away)."""
+    A kinematic body (a windmill) goes back too when it would drive the body it meets into a wall that
+    body lies against: it would crush it, so it stalls at the impact, standing still for the rest of
+    the substep, and turns on once the ball has got out of the way (or been shot away)."""
 
     name = "ccd"
 
@@ -72,15 +72,34 @@ class CCDProcessor(esper.Processor):
                     first = t
         return first
 
-    def _against_a_wall(self, body: Body, col: Collider) -> bool:
-        """Whether the body lies within the contact margin of a wall: pushed, it cannot give way there."""
-        r = col.radius + CONTACT_MARGIN
+    def _pinched(self, body: Body, col: Collider, arm: Body, arm_col: Collider, t: float) -> bool:
+        """Whether the arm, meeting the body at fraction `t` of the substep, drives it into a wall it
+        lies against (within the contact margin): the push (the separating axis between arm and
+        body at the impact) points at least 15° into that wall's face. A body it meets
+        along the wall, or away from one, is pushed as usual."""
+        sa = arm.scratch
+        arm_pieces, arm_normals = arm_col.world(sa.x0 + t * (arm.x - sa.x0), sa.y0 + t * (arm.y - sa.y0),
+                                                sa.angle0 + t * (arm.angle - sa.angle0))
+        arm_pieces = [list(p) for p in arm_pieces]
+        arm_normals = [list(n) for n in arm_normals]
         pieces, normals = col.world(body.x, body.y, body.angle)
+        best, push = -math.inf, (0.0, 0.0)
+        for av, an in zip(arm_pieces, arm_normals):
+            for bv, bn in zip(pieces, normals):
+                gap, face = max_separation(av, an, bv)
+                if gap > best:
+                    best, push = gap, an[face]
+                gap, face = max_separation(bv, bn, av)
+                if gap > best:
+                    best, push = gap, (-bn[face][0], -bn[face][1])
+        r = col.radius + CONTACT_MARGIN
         for wall_ent, k in self.statics.grid.query((body.x - r, body.y - r, body.x + r, body.y + r)):
             wall = esper.component_for_entity(wall_ent, Wall)
-            if any(separation(verts, norms, wall.pieces[k], wall.normals[k]) < CONTACT_MARGIN
-                   for verts, norms in zip(pieces, normals)):
-                return True
+            for verts in pieces:
+                gap, face = max_separation(wall.pieces[k], wall.normals[k], verts)
+                nx, ny = wall.normals[k][face]  # out of the wall, towards the body
+                if gap < CONTACT_MARGIN and push[0] * nx + push[1] * ny < -0.25:
+                    return True
         return False
 
     def _body_hits(self, bodies: list, first: dict[int, float]) -> None:
@@ -133,8 +152,9 @@ class CCDProcessor(esper.Processor):
                     if body.inv_mass and not body.asleep:
                         first[ent] = min(first.get(ent, 1.0), hit)
                 if kinematic:
-                    (arm, arm_ent), (ball, col) = ((a, ea), (b, col_b)) if not a.inv_mass else ((b, eb), (a, col_a))
-                    if self._against_a_wall(ball, col):
+                    (arm, arm_ent, arm_col), (ball, col) = (((a, ea, col_a), (b, col_b)) if not a.inv_mass
+                                                            else ((b, eb, col_b), (a, col_a)))
+                    if self._pinched(ball, col, arm, arm_col, hit):
                         first[arm_ent] = min(first.get(arm_ent, 1.0), hit)
 
 

@@ -10,6 +10,7 @@ class Launcher:
     every: float
     tee: tuple[float, float]
     clock: float = 0.0
+    spots: tuple[tuple[float, float], ...] = ()  # each player's own spot beside the tee, in ball order
 
     def __post_init__(self) -> None:
         self.clock = self.every

@@ -74,13 +74,14 @@ def hole_spec(hole: Hole, shape: ShapeSpec, players: int = 1) -> WorldSpec:
     green = spec.green or lib.green
     outline = ball_outline(shape, lib.ball.radius)
     max_strokes = spec.max_strokes or lib.max_strokes
+    spots = tee_spots(layout, lib.ball.radius, players)
     balls = [DynamicPart(
         name="ball" if players == 1 else f"ball-{k + 1}", outline=outline, position=spot, density=lib.ball.density,
         material=Material(lib.ball.restitution, lib.ball.friction),
         drag=Drag(**green.model_dump()) if green.any else None,
         asleep=spec.launch is None, top_speed=MAX_SHOT_SPEED,
         extras=(Ball(*spot), ShotInput(), HoleState(par=spec.par, max_strokes=max_strokes)),
-    ) for k, spot in enumerate(tee_spots(layout, lib.ball.radius, players))]
+    ) for k, spot in enumerate(spots)]
     walls = [WallPart(outline, Material()) for outline in layout.borders]
     walls += [WallPart(outline, material) for outline, material in layout.obstacles]
     walls += [WallPart(outline, material, (Bumper(kick),)) for outline, material, kick in layout.bumpers]
@@ -99,7 +100,7 @@ def hole_spec(hole: Hole, shape: ShapeSpec, players: int = 1) -> WorldSpec:
             marker = _MARKERS[kind]()
         entities.append((region, marker))
     if spec.launch is not None:
-        entities.append((Launcher(spec.launch.velocity, spec.launch.every, layout.tee),))
+        entities.append((Launcher(spec.launch.velocity, spec.launch.every, layout.tee, tuple(spots)),))
     windmills = [KinematicPart("windmill", local, pivot, speed, extras=(Windmill(speed),))
                  for local, pivot, speed in layout.windmills]
 

@@ -5,8 +5,9 @@ from polygolf.engine.components.resources import Resources
 
 
 class LaunchProcessor(esper.Processor):
-    """The collision test level's launcher: puts the ball back on the tee and sends it off at a
-    fixed velocity every `every` seconds, for watching collisions."""
+    """The collision test level's launcher: puts each ball back where it started (the tee, or its own
+    spot beside it when several play) and sends it off at a fixed velocity every `every` seconds, for
+    watching collisions."""
 
     name = "launch"
 
@@ -19,8 +20,8 @@ class LaunchProcessor(esper.Processor):
             if launcher.clock < launcher.every - 1e-9:  # substeps add up to `every` only to rounding
                 continue
             launcher.clock = 0.0
-            for _, (body, _) in esper.get_components(Body, Ball):
-                body.x, body.y = launcher.tee
+            for k, (_, (body, _)) in enumerate(sorted(esper.get_components(Body, Ball))):
+                body.x, body.y = launcher.spots[k] if k < len(launcher.spots) else launcher.tee
                 body.angle = 0.0
                 body.vx, body.vy = launcher.velocity
                 body.spin = 0.0

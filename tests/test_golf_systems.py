@@ -130,3 +130,22 @@ def test_launcher_sends_the_ball_from_the_tee_again_and_again(world):
     assert body.x == 9.0
     esper.process()
     assert (body.x, body.vx) == (3.0, 7.0)
+
+
+def test_the_launcher_sends_each_players_ball_from_its_own_spot():
+    """Collision test with two players: both balls launched again and again, never onto each other."""
+    from polygolf.engine.golf.holes import find_course, load_all_courses
+    from polygolf.engine.golf.play import HolePlay
+    from polygolf.engine.loading.scene import ShapeSpec
+
+    hole = find_course(load_all_courses()[0], "collision-test").playable[0]
+    play = HolePlay(hole, ShapeSpec(regular=5, radius=1.0), "fast", players=2)
+    try:
+        spots = [p.tee for p in play.players]
+        assert spots[0] != spots[1]
+        play.sim.step(1, measure=True)
+        assert play.sim.metrics.max_penetration < 0.011
+        play.sim.step(60 * 13, measure=True)  # two launches more
+        assert play.sim.metrics.max_penetration < 0.05
+    finally:
+        play.close()

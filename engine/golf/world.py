@@ -100,7 +100,7 @@ def hole_spec(hole: Hole, shape: ShapeSpec, players: int = 1) -> WorldSpec:
             marker = _MARKERS[kind]()
         entities.append((region, marker))
     if spec.launch is not None:
-        entities.append((Launcher(spec.launch.velocity, spec.launch.every, layout.tee, tuple(spots)),))
+        entities.append((Launcher(spec.launch.velocity, spec.launch.every, layout.tee, spots=tuple(spots)),))
     windmills = [KinematicPart("windmill", local, pivot, speed, extras=(Windmill(speed),))
                  for local, pivot, speed in layout.windmills]
 

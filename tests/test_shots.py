@@ -12,6 +12,7 @@ from polygolf.engine.golf.holes import find_course, load_all_courses
 from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.golf.shots import Shot, fan, simulate_shots
 from polygolf.engine.loading.scene import ShapeSpec
+from polygolf.engine.physics.settings import LINEAR_SLOP
 
 STAR = ShapeSpec(star=(5, 2), radius=1.0)
 
@@ -64,3 +65,35 @@ def test_water_costs_a_penalty_and_the_ball_goes_back(courses):
     for r in wet:
         assert r.penalties == 1 and r.rest == tee  # put back where it last rested: the tee
         assert len(r.path) == round(r.seconds * 60)
+
+
+def test_water_never_puts_a_ball_back_onto_another(courses):
+    """Hot seat: a ball shot from the tee into the water while another ball now lies on the tee goes
+    to the nearest free drop spot instead (it went back onto it: 434 mm of overlap in the fuzz)."""
+    hole = find_course(courses, "hazards").holes[1]  # Water Carry
+    tee = hole.layout.tee
+    wet = next(s for s, r in zip(fan(tee, 16, [1.5, 3.0]), simulate_shots(hole, STAR, fan(tee, 16, [1.5, 3.0]), "fast"))
+               if r.penalties)
+    play = HolePlay(hole, STAR, "fast", players=2)
+    try:
+        length = math.hypot(*wet.arrow)
+        play.turn = 1
+        play.place_ball(tee[0] - 1.5 * wet.arrow[0] / length, tee[1] - 1.5 * wet.arrow[1] / length)  # out of the way
+        play.turn = 0
+        play.place_ball(*tee)  # player 1's ball rests on the tee: its spot to go back to
+        assert play.shoot(tee, wet.arrow)
+        while math.dist((play.ball.x, play.ball.y), tee) < 1.5:
+            play.step()
+        play.turn = 1
+        play.place_ball(*tee)  # player 2's ball now lies there
+        play.turn = 0
+        for _ in range(600):
+            play.step()
+            if play.all_at_rest:
+                break
+        first, second = play.players[0].body, play.players[1].body
+        assert play.players[0].state.penalties == 1
+        assert math.dist((first.x, first.y), (second.x, second.y)) >= 2 * play.collider.radius
+        assert play.sim.metrics.max_penetration <= LINEAR_SLOP
+    finally:
+        play.close()

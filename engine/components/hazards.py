@@ -45,17 +45,27 @@ class Slope:
 @dataclass(slots=True)
 class Water:
     """A ball whose centre goes in costs `penalty` strokes and goes back where it last rested, unless
-    that spot is in a windmill's sweep (`keep_out`: circles x, y, r), where an arm would crush it;
-    then it goes to `fallback` (the tee)."""
+    that spot is in a windmill's sweep (`keep_out`: circles x, y, r), where an arm would crush it, or
+    another ball now lies there; then it goes to the nearest of `drops` (spots where a ball fits,
+    clear of walls, water and sweeps) that no ball covers, and failing that to `fallback` (the tee)."""
 
     penalty: int = 1
     keep_out: tuple[tuple[float, float, float], ...] = ()
     fallback: tuple[float, float] | None = None
+    drops: tuple[tuple[float, float], ...] = ()
 
-    def put_back(self, x: float, y: float) -> tuple[float, float]:
-        if self.fallback is not None and any((x - cx) ** 2 + (y - cy) ** 2 < r * r for cx, cy, r in self.keep_out):
-            return self.fallback
-        return x, y
+    def put_back(self, x: float, y: float, others: tuple[tuple[float, float, float], ...] = ()) -> tuple[float, float]:
+        """Where the ball goes; `others`: the other balls as circles (x, y, clearance they need)."""
+
+        def free(px: float, py: float) -> bool:
+            return all((px - ox) ** 2 + (py - oy) ** 2 >= r * r for ox, oy, r in others)
+
+        if free(x, y) and not any((x - cx) ** 2 + (y - cy) ** 2 < r * r for cx, cy, r in self.keep_out):
+            return x, y
+        clear = [d for d in self.drops if free(*d)]
+        if clear:
+            return min(clear, key=lambda d: (d[0] - x) ** 2 + (d[1] - y) ** 2)
+        return self.fallback if self.fallback is not None else (x, y)
 
 
 @dataclass(slots=True)

@@ -65,6 +65,21 @@ def tee_spots(layout: HoleLayout, radius: float, players: int) -> list[tuple[flo
     return spots
 
 
+def drop_spots(layout: HoleLayout, radius: float) -> tuple[tuple[float, float], ...]:
+    """Spots where water may put a ball back when its own spot is taken: every 2.5 radii over the
+    green, where a ball fits (clear of walls, water and windmills' sweeps)."""
+    step = TEE_SPACING * radius
+    spots = []
+    for x0, y0, x1, y1 in layout.floor:
+        nx, ny = int((x1 - x0) / step), int((y1 - y0) / step)
+        for i in range(nx):
+            for j in range(ny):
+                x, y = x0 + (i + 0.5) * (x1 - x0) / nx, y0 + (j + 0.5) * (y1 - y0) / ny
+                if ball_fits(layout, x, y, radius * 1.1):  # clear of sweeps too
+                    spots.append((x, y))
+    return tuple(spots)
+
+
 def hole_spec(hole: Hole, shape: ShapeSpec, players: int = 1) -> WorldSpec:
     """The world of `hole` played with `shape` (scaled to the library's ball radius) by `players`
     players, each with a ball of their own: they meet each other on the green."""
@@ -89,13 +104,15 @@ def hole_spec(hole: Hole, shape: ShapeSpec, players: int = 1) -> WorldSpec:
         (Cup(layout.cup[0], layout.cup[1], lib.cup.radius, lib.cup.max_speed),),
     ]
     sweeps = tuple((px, py, bounding_radius(local) + lib.ball.radius) for local, (px, py), _ in layout.windmills)
+    drops = drop_spots(layout, lib.ball.radius) if layout.zone_outlines("water") else ()
     for kind, zone, push in layout.zones:
         xs, ys = zip(*zone)
         region = Region(zone, (min(xs), min(ys), max(xs), max(ys)))
         if kind == "slope":
             marker: object = Slope(push)
         elif kind == "water":
-            marker = Water(keep_out=sweeps, fallback=layout.tee)  # never back into a windmill's sweep
+            # never back into a windmill's sweep, nor onto another ball
+            marker = Water(keep_out=sweeps, fallback=layout.tee, drops=drops)
         else:
             marker = _MARKERS[kind]()
         entities.append((region, marker))

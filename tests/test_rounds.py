@@ -296,3 +296,29 @@ def test_preset_switches_are_recorded_and_the_round_replays_exactly(courses):
     assert [i.preset for i in record.holes[0].inputs if i.kind == "preset"] == ["fast"]
     lines = verify(record, course)
     assert len(lines) == 3 and all(same for _, same in lines), lines
+
+
+def test_a_restart_never_drops_a_ball_onto_another():
+    """Hot seat: player 1 restarts while player 2's ball lies on player 1's tee spot."""
+    import math
+
+    from polygolf.engine.golf.holes import find_course, load_all_courses
+    from polygolf.engine.golf.play import HolePlay
+    from polygolf.engine.loading.scene import ShapeSpec
+
+    hole = find_course(load_all_courses()[0], "meadow").holes[0]
+    play = HolePlay(hole, ShapeSpec(regular=6, radius=1.0), "fast", players=2)
+    try:
+        mine = play.players[0].tee
+        play.turn = 0
+        play.place_ball(mine[0] + 4.0, mine[1])
+        play.turn = 1
+        play.place_ball(*mine)
+        play.turn = 0
+        assert play.restart_ball()
+        first, second = play.players[0].body, play.players[1].body
+        assert math.dist((first.x, first.y), (second.x, second.y)) >= 2 * play.collider.radius
+        play.sim.step(10, measure=True)
+        assert play.sim.metrics.max_penetration <= 0.011
+    finally:
+        play.close()

@@ -3,6 +3,7 @@ read what to draw. Views talk to this, never to the simulation's insides."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import esper
@@ -13,10 +14,11 @@ from polygolf.engine.components import Ball, Body, Bumper, Collider, HoleState, 
 from polygolf.engine.components.resources import Impact
 from polygolf.engine.golf.holes import Hole
 from polygolf.engine.golf.layout import HoleLayout
-from polygolf.engine.golf.world import hole_spec
+from polygolf.engine.golf.world import drop_spots, hole_spec
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.physics.polygon import Outline
 from polygolf.engine.physics.presets import Knobs
+from polygolf.engine.physics.settings import LINEAR_SLOP
 from polygolf.engine.physics.shot import clamp_arrow, shot_velocity
 
 RESTART_PENALTY = 1  # strokes a restart adds: the strokes already taken stay too
@@ -154,10 +156,24 @@ class HolePlay:
         player = self.players[self.turn]
         if player.state.finished:
             return False
-        self.place_ball(*player.tee)
+        self.place_ball(*self._free_spot(player))
         player.body.angle = 0.0
         self.sim.res.events.emit("penalty", player.entity, RESTART_PENALTY)
         return True
+
+    def _free_spot(self, player: PlayerBall) -> tuple[float, float]:
+        """The player's tee spot, or if another ball lies on it now, the nearest spot where a ball fits
+        that no ball covers (a restart never drops a ball onto another)."""
+        others = [(p.body.x, p.body.y, p.collider.radius + player.collider.radius + LINEAR_SLOP)
+                  for p in self.players if p is not player and not p.state.holed]
+
+        def free(x: float, y: float) -> bool:
+            return all((x - ox) ** 2 + (y - oy) ** 2 >= r * r for ox, oy, r in others)
+
+        if free(*player.tee):
+            return player.tee
+        spots = [s for s in drop_spots(self.layout, self.hole.library.ball.radius) if free(*s)]
+        return min(spots, key=lambda s: math.dist(s, player.tee)) if spots else player.tee
 
     def step(self, frames: int = 1, profile: bool = False) -> None:
         self.sim.step(frames, measure=False, profile=profile)

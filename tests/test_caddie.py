@@ -78,11 +78,7 @@ def test_the_preview_starts_at_the_ball_and_ends_at_the_first_contact(meadow):
         full, = simulate_shots(hole, PENTAGON, [Shot(ball, arrow)], play.knobs, path=True)
         assert path[1:] == full.path[:full.contact] and contact == full.contact_at  # played, up to the bounce
         assert full.contact < len(full.path) - 5  # and the ball goes on after it
-        # Played for real, the ball goes exactly along the preview.
-        play.shoot(ball, arrow)
-        for point in path[1:]:
-            play.step()
-            assert (play.ball.x, play.ball.y) == point
+        _played_along(play, ball, arrow, path)  # played for real, the ball goes exactly along the preview
     finally:
         play.close()
 
@@ -100,12 +96,17 @@ def test_the_preview_knows_where_the_windmills_stand_now():
         path, contact = preview_path(play, PENTAGON, ball, arrow)
         as_at_start, = simulate_shots(hole, PENTAGON, [Shot(ball, arrow)], "fast", path=True, until_contact=True)
         assert contact is not None and as_at_start.contact_at != contact  # a blade where it stands now
-        play.shoot(ball, arrow)
-        for point in path[1:]:
-            play.step()
-            assert (play.ball.x, play.ball.y) == point
+        _played_along(play, ball, arrow, path)
     finally:
         play.close()
+
+
+def _played_along(play: HolePlay, ball, arrow, path) -> None:
+    """The shot played for real goes through every point of the preview, bit for bit."""
+    play.shoot(ball, arrow)
+    for point in path[1:]:
+        play.step()
+        assert (play.ball.x, play.ball.y) == point
 
 
 def test_the_preview_stops_at_another_players_ball(meadow):

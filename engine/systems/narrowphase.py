@@ -50,8 +50,8 @@ class NarrowphaseProcessor(esper.Processor):
                 near.append((col_a, col_b, min(p.separation for _, _, p in raw)))
         # A body with something else near (a wall or another body) may be halted by it in the solve.
         busy = Counter(e for ea, eb, *_ in pairs for e in (ea, eb))
-        for ent in self.candidates.walls:
-            busy[ent] += 1
+        if pairs:
+            busy.update(self.candidates.walls.keys())
         for (ea, eb, a, b, _), (col_a, col_b, gap) in zip(pairs, near):
             gapped.append(gap > GAP_TOLERANCE
                           and not pair_reaches(col_a, a, col_b, b, dt, gap, busy[ea] > 1, busy[eb] > 1))

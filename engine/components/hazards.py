@@ -4,9 +4,12 @@ An area entity carries a `Region` and one kind marker; a bumper is a `Wall` with
 windmill is a kinematic `Body` + `Collider` with a `Windmill`.
 """
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 from polygolf.engine.physics.polygon import Outline, contains
+
+Circle = tuple[float, float, float]  # x, y, radius
 
 
 @dataclass(slots=True)
@@ -54,18 +57,27 @@ class Water:
     fallback: tuple[float, float] | None = None
     drops: tuple[tuple[float, float], ...] = ()
 
-    def put_back(self, x: float, y: float, others: tuple[tuple[float, float, float], ...] = ()) -> tuple[float, float]:
+    def put_back(self, x: float, y: float, others: tuple[Circle, ...] = ()) -> tuple[float, float]:
         """Where the ball goes; `others`: the other balls as circles (x, y, clearance they need)."""
-
-        def free(px: float, py: float) -> bool:
-            return all((px - ox) ** 2 + (py - oy) ** 2 >= r * r for ox, oy, r in others)
-
-        if free(x, y) and not any((x - cx) ** 2 + (y - cy) ** 2 < r * r for cx, cy, r in self.keep_out):
-            return x, y
-        clear = [d for d in self.drops if free(*d)]
-        if clear:
-            return min(clear, key=lambda d: (d[0] - x) ** 2 + (d[1] - y) ** 2)
+        spot = free_spot((x, y), self.drops, others, self.keep_out)
+        if spot is not None:
+            return spot
         return self.fallback if self.fallback is not None else (x, y)
+
+
+def free_spot(spot: tuple[float, float], candidates: Iterable[tuple[float, float]], others: Iterable[Circle],
+              blocked: Iterable[Circle] = ()) -> tuple[float, float] | None:
+    """`spot` if no circle of `others` or `blocked` covers it, else the nearest of `candidates` that no
+    circle of `others` covers, else None: where a ball may be put down without landing on another."""
+    others = tuple(others)
+
+    def free(px: float, py: float, circles: Iterable[Circle] = others) -> bool:
+        return all((px - cx) ** 2 + (py - cy) ** 2 >= r * r for cx, cy, r in circles)
+
+    if free(*spot) and free(*spot, blocked):
+        return spot
+    clear = [c for c in candidates if free(*c)]
+    return min(clear, key=lambda c: (c[0] - spot[0]) ** 2 + (c[1] - spot[1]) ** 2) if clear else None
 
 
 @dataclass(slots=True)

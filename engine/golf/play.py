@@ -3,7 +3,6 @@ read what to draw. Views talk to this, never to the simulation's insides."""
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import esper
@@ -11,6 +10,7 @@ import esper
 from polygolf.engine.assembly.assemble import assemble, resolve_knobs
 from polygolf.engine.assembly.simulation import Simulation
 from polygolf.engine.components import Ball, Body, Bumper, Collider, HoleState, ShotInput, Windmill
+from polygolf.engine.components.hazards import free_spot
 from polygolf.engine.components.resources import Impact
 from polygolf.engine.golf.holes import Hole
 from polygolf.engine.golf.layout import HoleLayout
@@ -166,14 +166,8 @@ class HolePlay:
         that no ball covers (a restart never drops a ball onto another)."""
         others = [(p.body.x, p.body.y, p.collider.radius + player.collider.radius + LINEAR_SLOP)
                   for p in self.players if p is not player and not p.state.holed]
-
-        def free(x: float, y: float) -> bool:
-            return all((x - ox) ** 2 + (y - oy) ** 2 >= r * r for ox, oy, r in others)
-
-        if free(*player.tee):
-            return player.tee
-        spots = [s for s in drop_spots(self.layout, self.hole.library.ball.radius) if free(*s)]
-        return min(spots, key=lambda s: math.dist(s, player.tee)) if spots else player.tee
+        spot = free_spot(player.tee, drop_spots(self.layout, self.hole.library.ball.radius), others)
+        return spot if spot is not None else player.tee
 
     def step(self, frames: int = 1, profile: bool = False) -> None:
         self.sim.step(frames, measure=False, profile=profile)

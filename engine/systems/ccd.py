@@ -80,8 +80,6 @@ class CCDProcessor(esper.Processor):
         sa = arm.scratch
         arm_pieces, arm_normals = arm_col.world(sa.x0 + t * (arm.x - sa.x0), sa.y0 + t * (arm.y - sa.y0),
                                                 sa.angle0 + t * (arm.angle - sa.angle0))
-        arm_pieces = [list(p) for p in arm_pieces]
-        arm_normals = [list(n) for n in arm_normals]
         pieces, normals = col.world(body.x, body.y, body.angle)
         best, push = -math.inf, (0.0, 0.0)
         for av, an in zip(arm_pieces, arm_normals):

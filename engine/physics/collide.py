@@ -5,12 +5,20 @@ penetration on either polygon, take that edge as the reference face, pick the mo
 of the other polygon as the incident edge, clip it to the reference face's side planes and keep the
 clipped points that lie within `margin` of the face. A flat face-to-face touch therefore gives two
 points that are solved together, never two unrelated contacts.
+
+The kernels read pieces as row ranges of (n, 2) vertex and normal arrays (`geometry.ConvexSet`), in
+world coordinates. A wall's pieces carry seam masks, row for row (physics.seams): `internal` edges
+are never a reference face, `hidden` vertices never a contact point.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
+import numpy as np
+
+from polygolf.engine.physics.jit import kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
 
 # Prefer polygon A's face unless B's is clearly better: stops the reference face flickering between
@@ -19,6 +27,181 @@ _REFERENCE_TOLERANCE = 5e-4
 # At a seam, the wall's face replaces A's as the reference only if it is about as near (m).
 _SEAM_SWITCH = 0.005
 
+# Columns of a contact row written by `collide_convex` / `collide_sets`.
+X, Y, SEP, FEATURE, REF_IS_A, CLIP_X, CLIP_Y, FACE_X, FACE_Y, NX, NY, PIECE_A, PIECE_B = range(13)
+ROW = 13
+NO_SEAMS = np.zeros(0, dtype=np.bool_)
+
+
+@kernel
+def max_separation(v1: np.ndarray, n1: np.ndarray, s1: int, e1: int, v2: np.ndarray, s2: int, e2: int,
+                   skip: np.ndarray, skip_start: int) -> tuple[float, int]:
+    """Largest separation of polygon 2 (rows s2..e2) from the faces of polygon 1 (rows s1..e1), but
+    the faces marked in `skip` (from row `skip_start`; -1: none), and that face's index in 1."""
+    best, best_edge = -1e300, 0
+    for i in range(e1 - s1):
+        if skip_start >= 0 and skip[skip_start + i]:
+            continue
+        nx, ny = n1[s1 + i, 0], n1[s1 + i, 1]
+        vx, vy = v1[s1 + i, 0], v1[s1 + i, 1]
+        lowest = 1e300
+        for j in range(s2, e2):
+            d = (v2[j, 0] - vx) * nx + (v2[j, 1] - vy) * ny
+            if d < lowest:
+                lowest = d
+        if lowest > best:
+            best, best_edge = lowest, i
+    return best, best_edge
+
+
+@kernel
+def _incident_edge(normals: np.ndarray, s: int, e: int, nx: float, ny: float, skip: np.ndarray,
+                   skip_start: int) -> int:
+    """The face most opposed to the reference normal (a wall's internal edges face nothing)."""
+    best, lowest = 0, 1e300
+    for i in range(e - s):
+        d = normals[s + i, 0] * nx + normals[s + i, 1] * ny
+        if d < lowest and not (skip_start >= 0 and skip[skip_start + i]):
+            lowest, best = d, i
+    return best
+
+
+@kernel
+def _clip(points: np.ndarray, count: int, nx: float, ny: float, offset: float, plane_id: float) -> int:
+    """Keep the part of a segment (rows 0, 1 of x, y, feature) where n·p <= offset
+    (Sutherland-Hodgman on one plane); returns how many points are left."""
+    if count < 2:
+        return count
+    x0, y0, f0 = points[0, 0], points[0, 1], points[0, 2]
+    x1, y1, f1 = points[1, 0], points[1, 1], points[1, 2]
+    d0 = nx * x0 + ny * y0 - offset
+    d1 = nx * x1 + ny * y1 - offset
+    out = 0
+    if d0 <= 0.0:
+        points[out, 0], points[out, 1], points[out, 2] = x0, y0, f0
+        out += 1
+    if d1 <= 0.0:
+        points[out, 0], points[out, 1], points[out, 2] = x1, y1, f1
+        out += 1
+    if d0 * d1 < 0.0:
+        t = d0 / (d0 - d1)
+        points[out, 0], points[out, 1], points[out, 2] = x0 + t * (x1 - x0), y0 + t * (y1 - y0), plane_id
+        out += 1
+    return out
+
+
+@kernel
+def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndarray, nb: np.ndarray, sb: int,
+                   eb: int, internal: np.ndarray, hidden: np.ndarray, seams: bool, margin: float,
+                   out: np.ndarray, row: int) -> int:
+    """Contact manifold of two convex CCW pieces, or nothing if they are more than `margin` apart.
+
+    Writes up to two contact rows from `row` on (columns X..NY; the normal points from A to B) and
+    returns how many. With `seams`, `internal` and `hidden` mark B's edges and vertices row for row
+    with `vb` (B is a wall piece)."""
+    no_skip = NO_SEAMS
+    sep_a, edge_a = max_separation(va, na, sa, ea, vb, sb, eb, no_skip, -1)
+    if sep_a > margin:
+        return 0
+    sep_b, edge_b = max_separation(vb, nb, sb, eb, va, sa, ea, no_skip, -1)
+    if sep_b > margin:
+        return 0
+    seam_start = sb if seams else -1
+    if seams:
+        covered = 0
+        for k in range(sb, eb):
+            if internal[k]:
+                covered += 1
+        if covered > 0:
+            if covered == eb - sb:
+                return 0  # a piece covered all round: the pieces around it answer for it
+            if internal[sb + edge_b]:
+                sep_b, edge_b = max_separation(vb, nb, sb, eb, va, sa, ea, internal, sb)
+
+    ref_is_a = not (sep_b > sep_a + _REFERENCE_TOLERANCE)
+    if ref_is_a:
+        edge = edge_a
+        inc_edge = _incident_edge(nb, sb, eb, na[sa + edge, 0], na[sa + edge, 1], internal, seam_start)
+        count_inc = eb - sb
+    else:
+        edge = edge_b
+        inc_edge = _incident_edge(na, sa, ea, nb[sb + edge, 0], nb[sb + edge, 1], no_skip, -1)
+        count_inc = ea - sa
+    i1, i2 = inc_edge, (inc_edge + 1) % count_inc
+    if ref_is_a and seams and (hidden[sb + i1] or hidden[sb + i2]) and sep_b >= sep_a - _SEAM_SWITCH:
+        # A's face would meet a wall corner that lies on a flat stretch of wall: the wall's own face
+        # there, as near as A's, is the true surface, so it is the reference (a slanted face of A
+        # would make a ghost hit). Otherwise the hidden corner is just left out below.
+        ref_is_a = False
+        edge = edge_b
+        inc_edge = _incident_edge(na, sa, ea, nb[sb + edge, 0], nb[sb + edge, 1], no_skip, -1)
+        count_inc = ea - sa
+        i1, i2 = inc_edge, (inc_edge + 1) % count_inc
+
+    if ref_is_a:
+        ref_v, ref_n, rs, re, inc_v, is_ = va, na, sa, ea, vb, sb
+    else:
+        ref_v, ref_n, rs, re, inc_v, is_ = vb, nb, sb, eb, va, sa
+    nx, ny = ref_n[rs + edge, 0], ref_n[rs + edge, 1]
+    r1x, r1y = ref_v[rs + edge, 0], ref_v[rs + edge, 1]
+    r2 = rs + (edge + 1) % (re - rs)
+    r2x, r2y = ref_v[r2, 0], ref_v[r2, 1]
+    tx, ty = r2x - r1x, r2y - r1y
+    tlen = (tx * tx + ty * ty) ** 0.5
+    tx, ty = tx / tlen, ty / tlen
+
+    # Clip the incident segment to the slab between the reference face's two side planes.
+    # Feature ids: an unclipped point keeps its incident vertex; a clipped one takes the side plane.
+    points = np.empty((3, 3))
+    points[0, 0], points[0, 1], points[0, 2] = inc_v[is_ + i1, 0], inc_v[is_ + i1, 1], i1
+    points[1, 0], points[1, 1], points[1, 2] = inc_v[is_ + i2, 0], inc_v[is_ + i2, 1], i2
+    lo = tx * r1x + ty * r1y
+    hi = tx * r2x + ty * r2y
+    count = _clip(points, 2, -tx, -ty, -lo, 100.0)
+    if count < 2:
+        return 0
+    count = _clip(points, count, tx, ty, hi, 101.0)
+    if count < 2:
+        return 0
+
+    face_offset = nx * r1x + ny * r1y
+    base_id = (edge * 128 + inc_edge) * 2 + (0 if ref_is_a else 1)
+    made = 0
+    for k in range(2):
+        px, py, feature = points[k, 0], points[k, 1], int(points[k, 2])
+        sep = nx * px + ny * py - face_offset
+        if ref_is_a and seams and feature < eb - sb and hidden[sb + feature]:
+            continue  # a wall's corner on a flat stretch of wall: the faces around it answer for it
+        if sep <= margin:
+            o = out[row + made]
+            o[X], o[Y], o[SEP] = px - 0.5 * sep * nx, py - 0.5 * sep * ny, sep
+            o[FEATURE], o[REF_IS_A] = base_id * 256 + feature, 1.0 if ref_is_a else 0.0
+            o[CLIP_X], o[CLIP_Y], o[FACE_X], o[FACE_Y] = px, py, r1x, r1y
+            o[NX], o[NY] = (nx, ny) if ref_is_a else (-nx, -ny)
+            made += 1
+    return made
+
+
+@kernel
+def collide_sets(va: np.ndarray, na: np.ndarray, fa: np.ndarray, vb: np.ndarray, nb: np.ndarray, fb: np.ndarray,
+                 pieces_b: np.ndarray, internal: np.ndarray, hidden: np.ndarray, seams: bool, margin: float,
+                 out: np.ndarray) -> int:
+    """Every contact between the pieces of A (`fa` ranges of va/na, world coordinates) and the
+    pieces of B listed in `pieces_b`, A's piece by piece, B's in the listed order; rows with the two
+    piece indices. `out` needs 2·(A's pieces)·len(pieces_b) rows. Returns the rows written."""
+    rows = 0
+    for i in range(len(fa) - 1):
+        for jj in range(len(pieces_b)):
+            j = pieces_b[jj]
+            made = collide_convex(va, na, fa[i], fa[i + 1], vb, nb, fb[j], fb[j + 1], internal, hidden, seams,
+                                  margin, out, rows)
+            for k in range(rows, rows + made):
+                out[k, PIECE_A], out[k, PIECE_B] = i, j
+            rows += made
+    return rows
+
+
+# --- the same for callers holding vertex lists (tests, tools) ---------------------------------------
 
 @dataclass(slots=True)
 class RawContact:
@@ -35,133 +218,48 @@ class RawContact:
     face_y: float
 
 
-def max_separation(verts1: list[Vec], normals1: list[Vec], verts2: list[Vec],
-                   skip: frozenset[int] = frozenset()) -> tuple[float, int]:
-    """Largest separation of polygon 2 from the faces of polygon 1 (but the `skip` ones), and that
-    face's index."""
-    best, best_edge = -1e300, 0
-    for i, (nx, ny) in enumerate(normals1):
-        if i in skip:
-            continue
-        vx, vy = verts1[i]
-        lowest = 1e300
-        for x, y in verts2:
-            d = (x - vx) * nx + (y - vy) * ny
-            if d < lowest:
-                lowest = d
-        if lowest > best:
-            best, best_edge = lowest, i
-    return best, best_edge
+def _rows(points: Sequence[Vec]) -> np.ndarray:
+    return np.asarray(points, dtype=np.float64).reshape(-1, 2)
 
 
-def separation(verts_a: list[Vec], normals_a: list[Vec], verts_b: list[Vec], normals_b: list[Vec]) -> float:
+def separation(verts_a: Sequence[Vec], normals_a: Sequence[Vec], verts_b: Sequence[Vec],
+               normals_b: Sequence[Vec]) -> float:
     """Separating-axis distance: a lower bound on the true distance, exact when it is negative."""
-    sa, _ = max_separation(verts_a, normals_a, verts_b)
-    sb, _ = max_separation(verts_b, normals_b, verts_a)
+    va, na, vb, nb = _rows(verts_a), _rows(normals_a), _rows(verts_b), _rows(normals_b)
+    sa, _ = max_separation(va, na, 0, len(va), vb, 0, len(vb), NO_SEAMS, -1)
+    sb, _ = max_separation(vb, nb, 0, len(vb), va, 0, len(va), NO_SEAMS, -1)
     return sa if sa > sb else sb
 
 
 def collide_polygons(
-    verts_a: list[Vec], normals_a: list[Vec], verts_b: list[Vec], normals_b: list[Vec], margin: float,
-    internal_b: frozenset[int] = frozenset(), hidden_b: frozenset[int] = frozenset(),
+    verts_a: Sequence[Vec], normals_a: Sequence[Vec], verts_b: Sequence[Vec], normals_b: Sequence[Vec],
+    margin: float, internal_b: frozenset[int] = frozenset(), hidden_b: frozenset[int] = frozenset(),
 ) -> tuple[Vec, list[RawContact]] | None:
-    """Contact manifold of two convex CCW polygons, or None if they are more than `margin` apart.
-
-    Returns the unit normal pointing from A to B and up to two points. For a wall piece B,
-    `internal_b` are edges covered by other pieces (never a reference face) and `hidden_b` vertices
-    on a flat or reflex stretch of the walls' boundary (never a contact point): see physics.seams.
-    """
-    sep_a, edge_a = max_separation(verts_a, normals_a, verts_b)
-    if sep_a > margin:
+    """Contact manifold of two convex CCW polygons, or None if they are more than `margin` apart:
+    the unit normal from A to B and up to two points. `internal_b`, `hidden_b`: B's covered edges
+    and vertices (B a wall piece; physics.seams)."""
+    va, na, vb, nb = _rows(verts_a), _rows(normals_a), _rows(verts_b), _rows(normals_b)
+    seams = bool(internal_b or hidden_b)
+    internal = np.array([k in internal_b for k in range(len(vb))], dtype=np.bool_)
+    hidden = np.array([k in hidden_b for k in range(len(vb))], dtype=np.bool_)
+    out = np.empty((2, ROW))
+    made = collide_convex(va, na, 0, len(va), vb, nb, 0, len(vb), internal, hidden, seams, float(margin), out, 0)
+    if not made:
         return None
-    sep_b, edge_b = max_separation(verts_b, normals_b, verts_a)
-    if sep_b > margin:
-        return None
-    if internal_b:
-        if len(internal_b) == len(verts_b):
-            return None  # a piece covered all round: the pieces around it answer for it
-        if edge_b in internal_b:
-            sep_b, edge_b = max_separation(verts_b, normals_b, verts_a, internal_b)
-
-    if sep_b > sep_a + _REFERENCE_TOLERANCE:
-        ref_v, ref_n, inc_v, inc_n, edge, ref_is_a = verts_b, normals_b, verts_a, normals_a, edge_b, False
-    else:
-        ref_v, ref_n, inc_v, inc_n, edge, ref_is_a = verts_a, normals_a, verts_b, normals_b, edge_a, True
-
-    inc_edge = _incident_edge(inc_n, ref_n[edge], internal_b if ref_is_a else frozenset())
-    count_inc = len(inc_v)
-    i1, i2 = inc_edge, (inc_edge + 1) % count_inc
-    if ref_is_a and (i1 in hidden_b or i2 in hidden_b) and sep_b >= sep_a - _SEAM_SWITCH:
-        # A's face would meet a wall corner that lies on a flat stretch of wall: the wall's own face
-        # there, as near as A's, is the true surface, so it is the reference (a slanted face of A
-        # would make a ghost hit). Otherwise the hidden corner is just left out below.
-        ref_v, ref_n, inc_v, inc_n, edge, ref_is_a = verts_b, normals_b, verts_a, normals_a, edge_b, False
-        inc_edge = _incident_edge(inc_n, ref_n[edge], frozenset())
-        count_inc = len(inc_v)
-        i1, i2 = inc_edge, (inc_edge + 1) % count_inc
-    nx, ny = ref_n[edge]
-    p1, p2 = inc_v[i1], inc_v[i2]
-
-    r1 = ref_v[edge]
-    r2 = ref_v[(edge + 1) % len(ref_v)]
-    tx, ty = r2[0] - r1[0], r2[1] - r1[1]
-    tlen = (tx * tx + ty * ty) ** 0.5
-    tx, ty = tx / tlen, ty / tlen
-
-    # Clip the incident segment to the slab between the reference face's two side planes.
-    # Feature ids: an unclipped point keeps its incident vertex; a clipped one takes the side plane.
-    points = [(p1[0], p1[1], i1), (p2[0], p2[1], i2)]
-    lo = tx * r1[0] + ty * r1[1]
-    hi = tx * r2[0] + ty * r2[1]
-    points = _clip(points, -tx, -ty, -lo, 100)
-    if len(points) < 2:
-        return None
-    points = _clip(points, tx, ty, hi, 101)
-    if len(points) < 2:
-        return None
-
-    face_offset = nx * r1[0] + ny * r1[1]
-    contacts = []
-    base_id = (edge * 128 + inc_edge) * 2 + (0 if ref_is_a else 1)
-    for px, py, feature in points:
-        sep = nx * px + ny * py - face_offset
-        if ref_is_a and feature in hidden_b:
-            continue  # a wall's corner on a flat stretch of wall: the faces around it answer for it
-        if sep <= margin:
-            contacts.append(RawContact(
-                x=px - 0.5 * sep * nx, y=py - 0.5 * sep * ny, separation=sep,
-                feature=base_id * 256 + feature, ref_is_a=ref_is_a,
-                clip_x=px, clip_y=py, face_x=r1[0], face_y=r1[1],
-            ))
-    if not contacts:
-        return None
-    normal = (nx, ny) if ref_is_a else (-nx, -ny)
-    return normal, contacts
+    contacts = [RawContact(x=o[X], y=o[Y], separation=o[SEP], feature=int(o[FEATURE]), ref_is_a=bool(o[REF_IS_A]),
+                           clip_x=o[CLIP_X], clip_y=o[CLIP_Y], face_x=o[FACE_X], face_y=o[FACE_Y])
+                for o in out[:made].tolist()]
+    return (float(out[0, NX]), float(out[0, NY])), contacts
 
 
-def _incident_edge(normals: list[Vec], reference: Vec, skip: frozenset[int]) -> int:
-    """The face most opposed to the reference normal (a wall's internal edges face nothing)."""
-    nx, ny = reference
-    best, lowest = 0, 1e300
-    for i, (mx, my) in enumerate(normals):
-        d = mx * nx + my * ny
-        if d < lowest and i not in skip:
-            lowest, best = d, i
-    return best
-
-
-def _clip(points: list[tuple[float, float, int]], nx: float, ny: float, offset: float, plane_id: int
-          ) -> list[tuple[float, float, int]]:
-    """Keep the part of a segment where n·p <= offset (Sutherland-Hodgman on one plane)."""
-    (x0, y0, f0), (x1, y1, f1) = points
-    d0 = nx * x0 + ny * y0 - offset
-    d1 = nx * x1 + ny * y1 - offset
-    out = []
-    if d0 <= 0.0:
-        out.append((x0, y0, f0))
-    if d1 <= 0.0:
-        out.append((x1, y1, f1))
-    if d0 * d1 < 0.0:
-        t = d0 / (d0 - d1)
-        out.append((x0 + t * (x1 - x0), y0 + t * (y1 - y0), plane_id))
-    return out
+@warm_up("contacts")
+def _warm() -> None:
+    square = [(0.5, -0.5), (0.5, 0.5), (-0.5, 0.5), (-0.5, -0.5)]
+    normals = [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)]
+    lifted = [(x, y + 0.995) for x, y in square]
+    collide_polygons(square, normals, lifted, normals, 0.01, frozenset({3}), frozenset({0}))
+    separation(square, normals, lifted, normals)
+    va, na = _rows(square), _rows(normals)
+    first = np.array([0, 4], dtype=np.int64)
+    collide_sets(va, na, first, _rows(lifted), na, first, np.zeros(1, dtype=np.int64), NO_SEAMS, NO_SEAMS, False,
+                 0.01, np.empty((2, ROW)))

@@ -6,162 +6,272 @@ true distance, and no point of the piece can close it faster than a bound mu, so
 advance by (d - target)/mu. Fixed axes (the wall's face normals) get the sharper bound
 max(0, -n.v) + |w|·R, which makes a head-on approach converge in one or two steps. The piece moves
 linearly in position and angle over the substep, which is exactly what the integrator did.
+
+Pieces are row ranges of `geometry.ConvexSet` arrays: a body's in its own frame (turned about its
+origin), a wall's in world coordinates. A kernel returns the fraction of the motion, or NO_HIT.
 """
 
 from __future__ import annotations
 
 import math
 
-from polygolf.engine.physics.polygon import Vec
+import numpy as np
+
+from polygolf.engine.physics.geometry import ConvexSet, pose_piece
+from polygolf.engine.physics.jit import kernel, warm_up
 from polygolf.engine.physics.settings import GAP_TOLERANCE
 
 MAX_ITERATIONS = 24
+NO_HIT = 2.0  # any fraction >= 1: the motion ends before an impact
 
 
-def _pose_vertices(local: tuple[Vec, ...], x: float, y: float, angle: float) -> list[Vec]:
-    c, s = math.cos(angle), math.sin(angle)
-    return [(x + c * px - s * py, y + s * px + c * py) for px, py in local]
+@kernel
+def _face_separations(verts: np.ndarray, normals: np.ndarray, others: np.ndarray, count: int, other_count: int,
+                      seps: np.ndarray, at: int) -> None:
+    """Separation of the first `other_count` rows of `others` from each of the first `count` faces,
+    into seps[at:]."""
+    for i in range(count):
+        nx, ny = normals[i, 0], normals[i, 1]
+        vx, vy = verts[i, 0], verts[i, 1]
+        lowest = 1e300
+        for j in range(other_count):
+            d = (others[j, 0] - vx) * nx + (others[j, 1] - vy) * ny
+            if d < lowest:
+                lowest = d
+        seps[at + i] = lowest
 
 
-def _pose_normals(local: tuple[Vec, ...], angle: float) -> list[Vec]:
-    c, s = math.cos(angle), math.sin(angle)
-    return [(c * nx - s * ny, s * nx + c * ny) for nx, ny in local]
+@kernel
+def _separations(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, xa: float, ya: float, aa: float,
+                 lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, xb: float, yb: float, ab: float, b_posed: bool,
+                 pa_v: np.ndarray, pa_n: np.ndarray, pb_v: np.ndarray, pb_n: np.ndarray, b_first: bool,
+                 seps: np.ndarray) -> float:
+    """Separation along every face of two pieces at their poses (a piece of B already `b_posed` is
+    used as it is: a wall); B's faces first if `b_first`. Returns the largest."""
+    na_, nb_ = ea - sa, eb - sb
+    pose_piece(lva, lna, sa, ea, xa, ya, aa, pa_v, pa_n)
+    if b_posed:
+        for k in range(nb_):
+            pb_v[k, 0], pb_v[k, 1] = lvb[sb + k, 0], lvb[sb + k, 1]
+            pb_n[k, 0], pb_n[k, 1] = lnb[sb + k, 0], lnb[sb + k, 1]
+    else:
+        pose_piece(lvb, lnb, sb, eb, xb, yb, ab, pb_v, pb_n)
+    if b_first:
+        _face_separations(pb_v, pb_n, pa_v, nb_, na_, seps, 0)
+        _face_separations(pa_v, pa_n, pb_v, na_, nb_, seps, nb_)
+    else:
+        _face_separations(pa_v, pa_n, pb_v, na_, nb_, seps, 0)
+        _face_separations(pb_v, pb_n, pa_v, nb_, na_, seps, na_)
+    best = -1e300
+    for k in range(na_ + nb_):
+        if seps[k] > best:
+            best = seps[k]
+    return best
 
 
-def time_of_impact(
-    piece: tuple[Vec, ...],
-    piece_normals: tuple[Vec, ...],
-    reach: float,
-    start: tuple[float, float, float],
-    end: tuple[float, float, float],
-    wall: tuple[Vec, ...],
-    wall_normals: tuple[Vec, ...],
-    target: float,
-    tolerance: float,
-    allowance: float,
-) -> float | None:
-    """Fraction of the motion start->end at which the piece first comes within `target` of the wall.
-
-    `piece` is in body coordinates and rotates about the body origin; `reach` is the largest distance
-    of its vertices from that origin. Returns None if the piece stays farther than `target` throughout.
-    A piece already touching at the start (sliding along the wall, say) is stopped only if it would
-    sink `allowance` deeper than it already is: a corner swinging into the wall while another rests
-    on it is caught, but sliding is not interrupted.
-    """
-    x0, y0, a0 = start
-    dx, dy, da = end[0] - x0, end[1] - y0, end[2] - a0
-    turn = abs(da) * reach  # largest distance any vertex moves by rotation over the whole motion
-    general_rate = math.hypot(dx, dy) + turn
-    if general_rate <= 0.0:
-        return None
-    # Per unit of t, wall face k can approach no faster than this; the piece's own faces turn with
-    # it, so only the general bound holds for them.
-    rates = [max(0.0, -(dx * nx + dy * ny)) + turn for nx, ny in wall_normals]
-    rates += [general_rate] * len(piece_normals)
-
-    def separations(t: float) -> list[float]:
-        """Separation along every candidate axis at time t: wall faces first, then the piece's."""
-        verts = _pose_vertices(piece, x0 + t * dx, y0 + t * dy, a0 + t * da)
-        normals = _pose_normals(piece_normals, a0 + t * da)
-        return _axis_separations(wall, wall_normals, verts) + _axis_separations(verts, normals, wall)
-
-    return _advance(separations, rates, target, tolerance, allowance)
-
-
-def pair_time_of_impact(
-    piece_a: tuple[Vec, ...], normals_a: tuple[Vec, ...], reach_a: float,
-    start_a: tuple[float, float, float], end_a: tuple[float, float, float],
-    piece_b: tuple[Vec, ...], normals_b: tuple[Vec, ...], reach_b: float,
-    start_b: tuple[float, float, float], end_b: tuple[float, float, float],
-    target: float, tolerance: float, allowance: float, at_start: list[float] | None = None,
-) -> float | None:
-    """The same for two pieces that both move (two bodies): every axis turns with its body, so every
-    axis takes the bound on their relative motion, |dA - dB| + |ΔθA|·RA + |ΔθB|·RB. `at_start`: the
-    separations at the start poses, if already measured (they do not depend on the motion)."""
-    rate = (math.hypot(end_a[0] - start_a[0] - end_b[0] + start_b[0], end_a[1] - start_a[1] - end_b[1] + start_b[1])
-            + abs(end_a[2] - start_a[2]) * reach_a + abs(end_b[2] - start_b[2]) * reach_b)
-    if rate <= 0.0:
-        return None
-
-    def pose(start: tuple[float, float, float], end: tuple[float, float, float], t: float) -> tuple[float, ...]:
-        return tuple(s + t * (e - s) for s, e in zip(start, end))
-
-    def separations(t: float) -> list[float]:
-        xa, ya, aa = pose(start_a, end_a, t)
-        xb, yb, ab = pose(start_b, end_b, t)
-        va, vb = _pose_vertices(piece_a, xa, ya, aa), _pose_vertices(piece_b, xb, yb, ab)
-        return (_axis_separations(va, _pose_normals(normals_a, aa), vb)
-                + _axis_separations(vb, _pose_normals(normals_b, ab), va))
-
-    return _advance(separations, [rate] * (len(piece_a) + len(piece_b)), target, tolerance, allowance, at_start)
-
-
-def _axis_separations(verts: list[Vec] | tuple[Vec, ...], normals, others: list[Vec] | tuple[Vec, ...]
-                      ) -> list[float]:
-    """Separation of `others` from each face of `verts`."""
-    return [min((ox - vx) * nx + (oy - vy) * ny for ox, oy in others) for (nx, ny), (vx, vy) in zip(normals, verts)]
-
-
-def _advance(separations, rates: list[float], target: float, tolerance: float, allowance: float,
-             at_start: list[float] | None = None) -> float | None:
+@kernel
+def _advance(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, start_a: np.ndarray, end_a: np.ndarray,
+             lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, start_b: np.ndarray, end_b: np.ndarray,
+             b_posed: bool, rates: np.ndarray, target: float, tolerance: float, allowance: float,
+             at_start: np.ndarray) -> float:
     """Conservative advancement over t in [0, 1]: the first t at which the separating-axis distance
-    comes within `target` (see time_of_impact for `allowance`), or None."""
-    seps = separations(0.0) if at_start is None else at_start
+    comes within `target` (see time_of_impact for `allowance`), or NO_HIT. Axes: B's faces first
+    when B is a wall, else A's. `at_start`: the separations at t = 0 if already measured (else
+    empty)."""
+    na_, nb_ = ea - sa, eb - sb
+    pa_v, pa_n = np.empty((na_, 2)), np.empty((na_, 2))
+    pb_v, pb_n = np.empty((nb_, 2)), np.empty((nb_, 2))
+    seps = np.empty(na_ + nb_)
+    if len(at_start):
+        worst = -1e300
+        for k in range(na_ + nb_):
+            seps[k] = at_start[k]
+            if seps[k] > worst:
+                worst = seps[k]
+    else:
+        worst = _separations(lva, lna, sa, ea, start_a[0], start_a[1], start_a[2], lvb, lnb, sb, eb,
+                             start_b[0], start_b[1], start_b[2], b_posed, pa_v, pa_n, pb_v, pb_n, b_posed, seps)
     # Already touching (sliding along the wall, say): only sinking `allowance` deeper counts.
-    level = target if max(seps) >= target + tolerance else min(max(seps), target) - allowance
+    level = target if worst >= target + tolerance else min(worst, target) - allowance
     t = 0.0
     for _ in range(MAX_ITERATIONS):
         # Any axis gives a safe step: its separation cannot fall to `level` sooner than this.
-        step = max((sep - level) / rate if rate > 0.0 else (math.inf if sep > level else 0.0)
-                   for sep, rate in zip(seps, rates))
+        step = -math.inf
+        for k in range(na_ + nb_):
+            rate = rates[k]
+            if rate > 0.0:
+                s = (seps[k] - level) / rate
+            else:
+                s = math.inf if seps[k] > level else 0.0
+            if s > step:
+                step = s
         t += step
         if t >= 1.0:
-            return None
-        seps = separations(t)
-        if max(seps) < level + tolerance:
+            return NO_HIT
+        worst = _separations(lva, lna, sa, ea, start_a[0] + t * (end_a[0] - start_a[0]),
+                             start_a[1] + t * (end_a[1] - start_a[1]), start_a[2] + t * (end_a[2] - start_a[2]),
+                             lvb, lnb, sb, eb, start_b[0] + t * (end_b[0] - start_b[0]),
+                             start_b[1] + t * (end_b[1] - start_b[1]), start_b[2] + t * (end_b[2] - start_b[2]),
+                             b_posed, pa_v, pa_n, pb_v, pb_n, b_posed, seps)
+        if worst < level + tolerance:
             return t
     return t
 
-def reaches(collider, body, wall: tuple[Vec, ...], wall_normals: tuple[Vec, ...], dt: float) -> bool:
-    """Whether the body, moving on with its velocity for dt, would press into the wall piece (by more
-    than GAP_TOLERANCE: a face that only grazes a corner, level with it, is not a hit)."""
-    start = (body.x, body.y, body.angle)
-    end = (body.x + body.vx * dt, body.y + body.vy * dt, body.angle + body.spin * dt)
-    return any(time_of_impact(piece, collider.normals[i], collider.piece_reach[i], start, end, wall, wall_normals,
-                              -GAP_TOLERANCE, GAP_TOLERANCE / 2, 0.0) is not None
-               for i, piece in enumerate(collider.pieces))
+
+_NOWHERE = np.zeros(3)
+_NOTHING = np.zeros(0)
 
 
-def pair_reaches(collider_a, a, collider_b, b, dt: float, gap: float = 0.0, may_halt_a: bool = True,
-                 may_halt_b: bool = True) -> bool:
+@kernel
+def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float, start: np.ndarray,
+                   end: np.ndarray, wv: np.ndarray, wn: np.ndarray, ws: int, we: int, target: float, tolerance: float,
+                   allowance: float) -> float:
+    """Fraction of the motion start -> end (x, y, angle) at which the piece (rows s..e, body frame)
+    first comes within `target` of the wall piece (rows ws..we, world), or NO_HIT.
+
+    `reach` is the largest distance of the piece's vertices from the body origin. A piece already
+    touching at the start (sliding along the wall, say) is stopped only if it would sink `allowance`
+    deeper than it already is: a corner swinging into the wall while another rests on it is caught,
+    but sliding is not interrupted."""
+    dx, dy, da = end[0] - start[0], end[1] - start[1], end[2] - start[2]
+    turn = abs(da) * reach  # largest distance any vertex moves by rotation over the whole motion
+    general_rate = math.hypot(dx, dy) + turn
+    if general_rate <= 0.0:
+        return NO_HIT
+    # Per unit of t, wall face k can approach no faster than this; the piece's own faces turn with
+    # it, so only the general bound holds for them.
+    rates = np.empty(we - ws + e - s)
+    for k in range(we - ws):
+        rates[k] = max(0.0, -(dx * wn[ws + k, 0] + dy * wn[ws + k, 1])) + turn
+    for k in range(we - ws, we - ws + e - s):
+        rates[k] = general_rate
+    return _advance(lv, ln, s, e, start, end, wv, wn, ws, we, _NOWHERE, _NOWHERE, True, rates, target, tolerance,
+                    allowance, _NOTHING)
+
+
+@kernel
+def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reach_a: float, start_a: np.ndarray,
+                        end_a: np.ndarray, lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, reach_b: float,
+                        start_b: np.ndarray, end_b: np.ndarray, target: float, tolerance: float, allowance: float,
+                        at_start: np.ndarray) -> float:
+    """The same for two pieces that both move (two bodies): every axis turns with its body, so every
+    axis takes the bound on their relative motion, |dA - dB| + |ΔθA|·RA + |ΔθB|·RB. `at_start`: the
+    separations at the start poses, if already measured (else empty)."""
+    rate = (math.hypot(end_a[0] - start_a[0] - end_b[0] + start_b[0], end_a[1] - start_a[1] - end_b[1] + start_b[1])
+            + abs(end_a[2] - start_a[2]) * reach_a + abs(end_b[2] - start_b[2]) * reach_b)
+    if rate <= 0.0:
+        return NO_HIT
+    rates = np.full(ea - sa + eb - sb, rate)
+    return _advance(lva, lna, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b, end_b, False, rates, target,
+                    tolerance, allowance, at_start)
+
+
+@kernel
+def first_wall_hit(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, start: np.ndarray,
+                   end: np.ndarray, wv: np.ndarray, wn: np.ndarray, wfirst: np.ndarray, walls: np.ndarray,
+                   target: float, tolerance: float, allowance: float) -> float:
+    """The earliest impact of any piece of a body moving start -> end with any of the wall pieces
+    listed in `walls` (1.0 if none)."""
+    best = 1.0
+    for w in walls:
+        for i in range(len(first) - 1):
+            t = time_of_impact(lv, ln, first[i], first[i + 1], reach[i], start, end, wv, wn, wfirst[w],
+                               wfirst[w + 1], target, tolerance, allowance)
+            if t < best:
+                best = t
+    return best
+
+
+@kernel
+def first_pair_hit(lva: np.ndarray, lna: np.ndarray, fa: np.ndarray, ra: np.ndarray, start_a: np.ndarray,
+                   end_a: np.ndarray, lvb: np.ndarray, lnb: np.ndarray, fb: np.ndarray, rb: np.ndarray,
+                   start_b: np.ndarray, end_b: np.ndarray, target: float, tolerance: float, allowance: float) -> float:
+    """The earliest impact of any piece of body A with any piece of body B, both moving (1.0 if
+    none)."""
+    best = 1.0
+    for i in range(len(fa) - 1):
+        for j in range(len(fb) - 1):
+            t = pair_time_of_impact(lva, lna, fa[i], fa[i + 1], ra[i], start_a, end_a, lvb, lnb, fb[j], fb[j + 1],
+                                    rb[j], start_b, end_b, target, tolerance, allowance, _NOTHING)
+            if t < best:
+                best = t
+    return best
+
+
+@kernel
+def reaches_wall(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, pose: np.ndarray,
+                 velocity: np.ndarray, dt: float, wv: np.ndarray, wn: np.ndarray, ws: int, we: int) -> bool:
+    """Whether the body, moving on with its velocity (vx, vy, spin) for dt, would press into the wall
+    piece (by more than GAP_TOLERANCE: a face that only grazes a corner, level with it, is not a
+    hit)."""
+    end = np.empty(3)
+    for k in range(3):
+        end[k] = pose[k] + velocity[k] * dt
+    for i in range(len(first) - 1):
+        if time_of_impact(lv, ln, first[i], first[i + 1], reach[i], pose, end, wv, wn, ws, we, -GAP_TOLERANCE,
+                          GAP_TOLERANCE / 2, 0.0) < 1.0:
+            return True
+    return False
+
+
+@kernel
+def pair_reaches(lva: np.ndarray, lna: np.ndarray, fa: np.ndarray, ra: np.ndarray, radius_a: float,
+                 pose_a: np.ndarray, vel_a: np.ndarray, lvb: np.ndarray, lnb: np.ndarray, fb: np.ndarray,
+                 rb: np.ndarray, radius_b: float, pose_b: np.ndarray, vel_b: np.ndarray, dt: float, gap: float,
+                 may_halt_a: bool, may_halt_b: bool) -> bool:
     """The same for two bodies: whether they would press into each other (by more than
     GAP_TOLERANCE) within dt, moving on as they are, or with either one halted (if `may_halt_` it:
     it has something else to meet). The solve that follows may stop a body against something else (a
     light ball the heavy block drives into a wall); a kept gap between bodies that then part costs
-    nothing, as the solver only stops approach. `gap` (their separation now, if known) rules out at
-    once bodies too slow to close it."""
-    turn_a, turn_b = abs(a.spin) * collider_a.radius, abs(b.spin) * collider_b.radius
-    start_a, start_b = (a.x, a.y, a.angle), (b.x, b.y, b.angle)
-    end_a = (a.x + a.vx * dt, a.y + a.vy * dt, a.angle + a.spin * dt)
-    end_b = (b.x + b.vx * dt, b.y + b.vy * dt, b.angle + b.spin * dt)
-    # Each motion, with the most it can close the gap by (no point moves farther); too little: skip it.
-    motions = [((end_a, end_b), math.hypot(a.vx - b.vx, a.vy - b.vy) + turn_a + turn_b)]
-    if may_halt_a:
-        motions.append(((start_a, end_b), math.hypot(b.vx, b.vy) + turn_b))
-    if may_halt_b:
-        motions.append(((end_a, start_b), math.hypot(a.vx, a.vy) + turn_a))
-    motions = [m for m, speed in motions if speed * dt >= gap + GAP_TOLERANCE and m != (start_a, start_b)]
-    if not motions:
+    nothing, as the solver only stops approach. `gap` (their separation now) rules out at once
+    bodies too slow to close it."""
+    turn_a, turn_b = abs(vel_a[2]) * radius_a, abs(vel_b[2]) * radius_b
+    end_a, end_b = np.empty(3), np.empty(3)
+    for k in range(3):
+        end_a[k] = pose_a[k] + vel_a[k] * dt
+        end_b[k] = pose_b[k] + vel_b[k] * dt
+    # Each motion (A's end, B's end), with the most it can close the gap by (no point moves
+    # farther); too little, or no motion at all: skip it.
+    moves_a = (end_a, pose_a, end_a)
+    moves_b = (end_b, end_b, pose_b)
+    speeds = (math.hypot(vel_a[0] - vel_b[0], vel_a[1] - vel_b[1]) + turn_a + turn_b,
+              math.hypot(vel_b[0], vel_b[1]) + turn_b, math.hypot(vel_a[0], vel_a[1]) + turn_a)
+    allowed = (True, may_halt_a, may_halt_b)
+    use = np.zeros(3, dtype=np.bool_)
+    for m in range(3):
+        still = True
+        for k in range(3):
+            if moves_a[m][k] != pose_a[k] or moves_b[m][k] != pose_b[k]:
+                still = False
+        use[m] = allowed[m] and speeds[m] * dt >= gap + GAP_TOLERANCE and not still
+    if not use.any():
         return False
-    for i, piece_a in enumerate(collider_a.pieces):
-        for j, piece_b in enumerate(collider_b.pieces):
-            va = _pose_vertices(piece_a, *start_a)
-            vb = _pose_vertices(piece_b, *start_b)
-            at_start = (_axis_separations(va, _pose_normals(collider_a.normals[i], a.angle), vb)
-                        + _axis_separations(vb, _pose_normals(collider_b.normals[j], b.angle), va))
-            for moved_a, moved_b in motions:
-                if pair_time_of_impact(piece_a, collider_a.normals[i], collider_a.piece_reach[i], start_a, moved_a,
-                                       piece_b, collider_b.normals[j], collider_b.piece_reach[j], start_b, moved_b,
-                                       -GAP_TOLERANCE, GAP_TOLERANCE / 2, 0.0, at_start) is not None:
+    for i in range(len(fa) - 1):
+        for j in range(len(fb) - 1):
+            na_, nb_ = fa[i + 1] - fa[i], fb[j + 1] - fb[j]
+            pa_v, pa_n = np.empty((na_, 2)), np.empty((na_, 2))
+            pb_v, pb_n = np.empty((nb_, 2)), np.empty((nb_, 2))
+            at_start = np.empty(na_ + nb_)
+            _separations(lva, lna, fa[i], fa[i + 1], pose_a[0], pose_a[1], pose_a[2], lvb, lnb, fb[j], fb[j + 1],
+                         pose_b[0], pose_b[1], pose_b[2], False, pa_v, pa_n, pb_v, pb_n, False, at_start)
+            for m in range(3):
+                if use[m] and pair_time_of_impact(lva, lna, fa[i], fa[i + 1], ra[i], pose_a, moves_a[m], lvb, lnb,
+                                                  fb[j], fb[j + 1], rb[j], pose_b, moves_b[m], -GAP_TOLERANCE,
+                                                  GAP_TOLERANCE / 2, 0.0, at_start) < 1.0:
                     return True
     return False
+
+
+@warm_up("continuous collision")
+def _warm() -> None:
+    square = ConvexSet.of([((0.5, -0.5), (0.5, 0.5), (-0.5, 0.5), (-0.5, -0.5))],
+                          [((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))])
+    wall = ConvexSet.of([((2.0, -1.0), (3.0, -1.0), (3.0, 1.0), (2.0, 1.0))],
+                        [((0.0, -1.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0))])
+    start, end, still = np.array([0.0, 0.0, 0.0]), np.array([2.0, 0.0, 0.5]), np.array([3.0, 3.0, 0.0])
+    walls = np.zeros(1, dtype=np.int64)
+    args = (square.verts, square.normals, square.first, square.reach)
+    first_wall_hit(*args, start, end, wall.verts, wall.normals, wall.first, walls, 0.005, 0.001, 0.005)
+    first_pair_hit(*args, start, end, *args, still, still, 0.005, 0.001, 0.005)
+    reaches_wall(*args, start, end, 1.0 / 240.0, wall.verts, wall.normals, 0, 4)
+    pair_reaches(*args, 0.7, start, end, *args, 0.7, still, end, 1.0 / 240.0, 0.01, True, True)

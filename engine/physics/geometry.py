@@ -1,0 +1,69 @@
+"""Convex pieces packed in arrays, the form every compiled kernel reads.
+
+A `ConvexSet` holds any number of convex CCW pieces back to back: piece p has vertices
+`verts[first[p]:first[p + 1]]` and the outward normals of its edges at the same rows (normal k
+belongs to edge k -> k+1), and `reach[p]` is its farthest vertex from the origin. A body's collider
+keeps its pieces in its own frame; the walls of a world are one set in world coordinates.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from polygolf.engine.physics.jit import kernel, warm_up
+from polygolf.engine.physics.polygon import Vec
+
+
+@dataclass(frozen=True, eq=False)
+class ConvexSet:
+    verts: np.ndarray  # (n, 2) float64
+    normals: np.ndarray  # (n, 2) float64
+    first: np.ndarray  # (pieces + 1,) int64
+    reach: np.ndarray  # (pieces,) float64
+
+    @classmethod
+    def of(cls, pieces: Sequence[Sequence[Vec]], normals: Sequence[Sequence[Vec]]) -> ConvexSet:
+        counts = [len(p) for p in pieces]
+        first = np.zeros(len(pieces) + 1, dtype=np.int64)
+        first[1:] = np.cumsum(counts)
+        verts = np.array([v for p in pieces for v in p], dtype=np.float64).reshape(-1, 2)
+        norms = np.array([n for ns in normals for n in ns], dtype=np.float64).reshape(-1, 2)
+        reach = np.array([max(math.hypot(x, y) for x, y in p) for p in pieces], dtype=np.float64)
+        return cls(verts, norms, first, reach)
+
+    def __len__(self) -> int:
+        return len(self.first) - 1
+
+
+@kernel
+def pose_piece(verts: np.ndarray, normals: np.ndarray, start: int, end: int, x: float, y: float, angle: float,
+               out_verts: np.ndarray, out_normals: np.ndarray) -> None:
+    """Rows start..end of a body-frame set, turned by `angle` and moved to (x, y), into rows 0.. of
+    the outputs (the same arithmetic, in the same order, wherever a pose is taken)."""
+    c, s = math.cos(angle), math.sin(angle)
+    for k in range(end - start):
+        px, py = verts[start + k, 0], verts[start + k, 1]
+        out_verts[k, 0] = x + c * px - s * py
+        out_verts[k, 1] = y + s * px + c * py
+        nx, ny = normals[start + k, 0], normals[start + k, 1]
+        out_normals[k, 0] = c * nx - s * ny
+        out_normals[k, 1] = s * nx + c * ny
+
+
+@kernel
+def pose_set(verts: np.ndarray, normals: np.ndarray, x: float, y: float, angle: float,
+             out_verts: np.ndarray, out_normals: np.ndarray) -> None:
+    """Every row of a body-frame set at a pose."""
+    pose_piece(verts, normals, 0, verts.shape[0], x, y, angle, out_verts, out_normals)
+
+
+@warm_up("shapes")
+def _warm() -> None:
+    square = ConvexSet.of([((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))],
+                          [((0.7, 0.7), (-0.7, 0.7), (-0.7, -0.7), (0.7, -0.7))])
+    out_v, out_n = np.empty_like(square.verts), np.empty_like(square.normals)
+    pose_set(square.verts, square.normals, 0.5, 0.5, 0.1, out_v, out_n)

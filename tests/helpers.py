@@ -12,7 +12,6 @@ from polygolf.engine.assembly.stages import stages_for
 from polygolf.engine.components import Material
 from polygolf.engine.components.resources import Resources, StaticWorld, StepConfig
 from polygolf.engine.golf.scenes import build_scene_file
-from polygolf.engine.physics.grid import SpatialGrid
 from polygolf.engine.physics.presets import preset
 
 from .conftest import SCENES
@@ -34,15 +33,14 @@ def step_until(sim: Simulation, condition, max_frames: int = 600) -> int:
 def resources(knobs: str = "balanced", walls=(), cell: float = 2.0, effects=()) -> Resources:
     """Resources for processors assembled by hand in the current world; `walls` are (outline,
     material, extra components) or bare outlines, created as entities and filed in the grid."""
-    grid = SpatialGrid(cell)
+    made = []
     for wall_spec in walls:
         outline, material, extra = wall_spec if len(wall_spec) == 3 and isinstance(wall_spec[1], Material) \
             else (wall_spec, Material(), ())
         wall = make_wall(outline, material)
-        ent = esper.create_entity(wall, *extra)
-        for k, box in enumerate(wall.piece_aabbs):
-            grid.insert((ent, k), box)
-    return Resources(config=StepConfig(knobs=preset(knobs), effects=frozenset(effects)), statics=StaticWorld(grid))
+        made.append((esper.create_entity(wall, *extra), wall))
+    return Resources(config=StepConfig(knobs=preset(knobs), effects=frozenset(effects)),
+                     statics=StaticWorld.of(made, cell))
 
 
 def pipeline(res: Resources, effects, walls: bool) -> list[esper.Processor]:

@@ -3,31 +3,49 @@ make it slow or hungry."""
 
 from __future__ import annotations
 
+import math
 import time
 
+import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from polygolf.engine.loading.scene import Scene, build_scene
-from polygolf.engine.physics.grid import SpatialGrid, overlaps
+from polygolf.engine.physics.grid import BoxGrid, box_pairs
 
 coord = st.floats(-3000, 3000, allow_nan=False)
 size = st.floats(0.01, 2000, allow_nan=False)
 boxes = st.builds(lambda x, y, w, h: (x, y, x + w, y + h), coord, coord, size, size)
 
 
+def _overlaps(a, b) -> bool:
+    return a[0] <= b[2] and b[0] <= a[2] and a[1] <= b[3] and b[1] <= a[3]
+
+
 @settings(max_examples=200, deadline=None)
-@given(st.lists(boxes, min_size=1, max_size=30), st.lists(boxes, min_size=1, max_size=5))
-def test_queries_and_pairs_match_brute_force(items, queries):
-    grid = SpatialGrid(1.0)
-    for i, box in enumerate(items):
-        grid.insert(i, box)
+@given(st.lists(boxes, min_size=1, max_size=30), st.lists(boxes, min_size=1, max_size=5),
+       st.floats(0.05, 50.0), st.lists(st.booleans(), min_size=30, max_size=30))
+def test_queries_and_pairs_match_brute_force(items, queries, cell, active):
+    grid = BoxGrid(np.array(items), cell)
     for query in queries:
-        found = grid.query(query)
-        assert len(found) == len(set(found))
-        assert set(found) == {i for i, box in enumerate(items) if overlaps(query, box)}
-    expected = {(i, j) for i in range(len(items)) for j in range(i + 1, len(items)) if overlaps(items[i], items[j])}
-    assert set(grid.pairs()) == expected
+        found = grid.query(query).tolist()
+        assert found == sorted(i for i, box in enumerate(items) if _overlaps(query, box))
+    first, found = grid.query_many(np.array(queries))
+    assert [found[first[q]:first[q + 1]].tolist() for q in range(len(queries))] == [
+        grid.query(query).tolist() for query in queries]
+    active = np.array(active[:len(items)])
+    expected = sorted((i, j) for i in range(len(items)) for j in range(i + 1, len(items))
+                      if _overlaps(items[i], items[j]) and (active[i] or active[j]))
+    assert [tuple(p) for p in box_pairs(np.array(items), active).tolist()] == expected
+
+
+def test_boxes_beyond_the_grid_and_not_numbers_are_answered_too():
+    grid = BoxGrid(np.array([[0.0, 0.0, 1.0, 1.0], [5.0, 5.0, 6.0, 6.0]]), 1.0)
+    assert grid.query((-math.inf, -math.inf, math.inf, math.inf)).tolist() == [0, 1]
+    assert grid.query((-100.0, -100.0, 0.5, 0.5)).tolist() == [0]
+    assert grid.query((100.0, 100.0, 200.0, 200.0)).tolist() == []
+    assert grid.query((math.nan, math.nan, math.nan, math.nan)).tolist() == []
+    assert BoxGrid(np.zeros((0, 4)), 1.0).query((0.0, 0.0, 1.0, 1.0)).tolist() == []
 
 
 def test_a_kilometre_wall_and_a_fast_body_stay_cheap():

@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 import esper
+import numpy as np
 import pytest
 
 from polygolf.engine.assembly.assemble import make_body, make_collider
@@ -116,7 +117,7 @@ def test_broadphase_pairs_only_neighbours(world):
     esper.add_processor(BroadphaseProcessor(ctx))
     esper.process()
     assert list(ctx.candidates.walls) == [e_near]
-    assert [wall for wall, _ in ctx.candidates.walls[e_near]] == [1]  # the first wall only
+    assert ctx.statics.owner[ctx.candidates.walls[e_near]].tolist() == [1]  # the first wall only
     assert ctx.candidates.pairs == [(min(ea, eb), max(ea, eb))]  # resting pairs and far bodies: none
 
 
@@ -125,7 +126,7 @@ def test_narrowphase_square_face_gives_one_two_point_manifold(world):
     half = 0.5 / math.sqrt(2.0)
     body, col = ball(half - 0.002, 0.0)  # 2 mm into the wall
     ent = esper.create_entity(body, col)
-    ctx.candidates.walls = {ent: [(1, 0)]}
+    ctx.candidates.walls = {ent: np.array([0])}  # the first wall's only piece
     esper.add_processor(NarrowphaseProcessor(ctx))
     esper.process()
     assert len(ctx.contacts.manifolds) == 1
@@ -141,9 +142,9 @@ def test_narrowphase_merges_a_star_landing_on_two_tips(world):
     tip_x = min(x for x, _ in star)
     ctx = context(walls=[box(-1.0, 0.0, 1.0, 5.0)])
     body, col = ball(-tip_x - 0.001, 0.0, outline=star, angle=0.0)
-    assert len(col.pieces) > 1  # non-convex: the two tips are in different pieces
+    assert len(col.shape) > 1  # non-convex: the two tips are in different pieces
     ent = esper.create_entity(body, col)
-    ctx.candidates.walls = {ent: [(1, 0)]}
+    ctx.candidates.walls = {ent: np.array([0])}  # the first wall's only piece
     esper.add_processor(NarrowphaseProcessor(ctx))
     esper.process()
     assert len(ctx.contacts.manifolds) == 1, "the two tips must form one manifold"
@@ -157,7 +158,7 @@ def test_narrowphase_carries_impulses_of_persisting_points(world):
     ctx = context(walls=[box(-1.0, 0.0, 1.0, 5.0)])
     body, col = ball(0.5 / math.sqrt(2.0) - 0.002, 0.0)
     ent = esper.create_entity(body, col)
-    ctx.candidates.walls = {ent: [(1, 0)]}
+    ctx.candidates.walls = {ent: np.array([0])}  # the first wall's only piece
     esper.add_processor(NarrowphaseProcessor(ctx))
     esper.process()
     for p in ctx.contacts.manifolds[0].points:

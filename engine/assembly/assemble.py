@@ -7,6 +7,7 @@ import itertools
 from collections.abc import Iterable, Sequence
 
 import esper
+import numpy as np
 
 from polygolf.engine.assembly.effects import effects_for
 from polygolf.engine.assembly.simulation import Simulation
@@ -15,7 +16,8 @@ from polygolf.engine.assembly.stages import stages_for
 from polygolf.engine.components import Body, Collider, Material, Name, Wall
 from polygolf.engine.components.resources import Resources, StaticWorld, StepConfig
 from polygolf.engine.physics import polygon
-from polygolf.engine.physics.grid import SpatialGrid
+from polygolf.engine.physics.geometry import ConvexSet
+from polygolf.engine.physics.grid import BoxGrid
 from polygolf.engine.physics.mass import mass_properties
 from polygolf.engine.physics.presets import DEFAULT_PRESET, PRESETS, Knobs, preset
 from polygolf.engine.physics.seams import PROBE, covered_features
@@ -27,10 +29,8 @@ def make_collider(outline: polygon.Outline, material: Material) -> Collider:
     """Collider of a normalised outline (CCW, centroid at the origin)."""
     pieces = tuple(polygon.convex_pieces(outline))
     return Collider(
-        outline=tuple(outline), pieces=pieces,
-        normals=tuple(polygon.edge_normals(p) for p in pieces),
+        outline=tuple(outline), shape=ConvexSet.of(pieces, [polygon.edge_normals(p) for p in pieces]),
         radius=polygon.bounding_radius(outline), material=material,
-        piece_reach=tuple(polygon.bounding_radius(p) for p in pieces),
         thickness=min(polygon.min_width(p) for p in pieces),
     )
 
@@ -65,12 +65,10 @@ def make_wall(outline: Sequence[polygon.Vec], material: Material) -> Wall:
 def mark_seams(walls: Sequence[Wall]) -> None:
     """Tell every wall piece which of its edges and vertices other pieces cover (physics.seams)."""
     pieces = [(w, k) for w in walls for k in range(len(w.pieces))]
-    index = SpatialGrid(1.0)
-    for i, (w, k) in enumerate(pieces):
-        x0, y0, x1, y1 = w.piece_aabbs[k]
-        index.insert(i, (x0 - 2 * PROBE, y0 - 2 * PROBE, x1 + 2 * PROBE, y1 + 2 * PROBE))
+    boxes = np.array([w.piece_aabbs[k] for w, k in pieces], dtype=np.float64).reshape(-1, 4)
+    index = BoxGrid(boxes + (-2 * PROBE, -2 * PROBE, 2 * PROBE, 2 * PROBE), 1.0)
     internal, hidden = covered_features([w.pieces[k] for w, k in pieces], [w.normals[k] for w, k in pieces],
-                                        lambda i: index.query(pieces[i][0].piece_aabbs[pieces[i][1]]))
+                                        lambda i: index.query(boxes[i]).tolist())
     start = 0
     for w in walls:
         count = len(w.pieces)
@@ -113,13 +111,10 @@ def assemble(spec: WorldSpec, knobs: Knobs | str | None = None) -> Simulation:
     for components in spec.entities:
         esper.create_entity(*components)
 
-    grid = SpatialGrid(spec.cell_size or max(1.0, 4.0 * radius))
     walls = [make_wall(part.outline, part.material) for part in spec.walls]
     mark_seams(walls)
-    for part, wall in zip(spec.walls, walls):
-        ent = esper.create_entity(wall, *part.extras)
-        for k, box in enumerate(wall.piece_aabbs):
-            grid.insert((ent, k), box)
+    statics = StaticWorld.of([(esper.create_entity(wall, *part.extras), wall) for part, wall in zip(spec.walls, walls)],
+                             spec.cell_size or max(1.0, 4.0 * radius))
     for part in spec.kinematic:
         # no inverse mass or inertia: nothing pushes it
         body = Body(x=part.position[0], y=part.position[1], angle=part.angle, spin=part.spin)
@@ -127,6 +122,6 @@ def assemble(spec: WorldSpec, knobs: Knobs | str | None = None) -> Simulation:
 
     res = Resources(config=StepConfig(knobs=knobs, effects=frozenset(effects), gravity=tuple(spec.gravity),
                                       collide_bodies=spec.collide_bodies),
-                    statics=StaticWorld(grid))
+                    statics=statics)
     processors = [stage.processor(res) for stage in stages_for(effects, spec, knobs)]
     return Simulation(world, res, processors, names, preset_name=name, reasons=effects, scene_name=spec.name)

@@ -1,8 +1,11 @@
 import math
 from dataclasses import dataclass, field
 
+import numpy as np
+
 from polygolf.engine.physics.body import Material
-from polygolf.engine.physics.polygon import Outline, Vec
+from polygolf.engine.physics.geometry import ConvexSet, pose_set
+from polygolf.engine.physics.polygon import Outline
 
 __all__ = ["Collider", "Material"]
 
@@ -11,27 +14,23 @@ __all__ = ["Collider", "Material"]
 class Collider:
     """A body's shape in its own frame (centroid at the origin), split into convex pieces.
 
-    World-space vertices are cached per pose, so a body that has not moved is not transformed again.
-    """
+    World-space vertices are kept for the last pose asked for, so a body that has not moved is not
+    transformed again."""
 
     outline: Outline
-    pieces: tuple[Outline, ...]
-    normals: tuple[tuple[Vec, ...], ...]
+    shape: ConvexSet  # the convex pieces, in the body's frame
     radius: float  # bounding radius about the centroid
     material: Material
-    piece_reach: tuple[float, ...] = ()  # per piece, farthest vertex from the centroid
     thickness: float = 0.0  # the thinnest width of any piece: a smaller relative step cannot pass through it
     _pose: tuple[float, float, float] = (math.nan, math.nan, math.nan)
-    _world_pieces: list[list[Vec]] = field(default_factory=list)
-    _world_normals: list[list[Vec]] = field(default_factory=list)
+    _verts: np.ndarray = field(default_factory=lambda: np.empty((0, 2)))
+    _normals: np.ndarray = field(default_factory=lambda: np.empty((0, 2)))
 
-    def world(self, x: float, y: float, angle: float) -> tuple[list[list[Vec]], list[list[Vec]]]:
-        """Vertices and normals of every piece at the given pose."""
+    def posed(self, x: float, y: float, angle: float) -> tuple[np.ndarray, np.ndarray]:
+        """Vertices and normals of every piece at the given pose (rows as in `shape`)."""
         if self._pose != (x, y, angle):
-            c, s = math.cos(angle), math.sin(angle)
-            self._world_pieces = [[(x + c * px - s * py, y + s * px + c * py) for px, py in piece]
-                                  for piece in self.pieces]
-            self._world_normals = [[(c * nx - s * ny, s * nx + c * ny) for nx, ny in normals]
-                                   for normals in self.normals]
+            if len(self._verts) != len(self.shape.verts):
+                self._verts, self._normals = np.empty_like(self.shape.verts), np.empty_like(self.shape.normals)
+            pose_set(self.shape.verts, self.shape.normals, x, y, angle, self._verts, self._normals)
             self._pose = (x, y, angle)
-        return self._world_pieces, self._world_normals
+        return self._verts, self._normals

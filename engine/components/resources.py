@@ -4,11 +4,16 @@ by who writes it, so a processor's constructor shows what it reads and writes.""
 from __future__ import annotations
 
 from collections import deque
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
+import numpy as np
+
+from polygolf.engine.components.wall import Wall
 from polygolf.engine.physics.body import Body
 from polygolf.engine.physics.contact import Carried, Manifold, persistent_impulses
-from polygolf.engine.physics.grid import SpatialGrid
+from polygolf.engine.physics.geometry import ConvexSet
+from polygolf.engine.physics.grid import BoxGrid
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import FRAME_DT
 
@@ -29,17 +34,41 @@ class StepConfig:
 
 @dataclass(slots=True)
 class StaticWorld:
-    """The walls' index, filed once at assembly; and the stand-in body a wall contact pushes against."""
+    """The walls as one set of convex pieces in world coordinates, filed once at assembly: row for
+    row with the vertices, the seams (physics.seams: `internal` edges, `hidden` vertices); per piece,
+    the wall entity it belongs to and its index there; a grid of the pieces' boxes. And the stand-in
+    body a wall contact pushes against."""
 
-    grid: SpatialGrid
+    pieces: ConvexSet
+    internal: np.ndarray  # bool per vertex row: the edge starting there is covered
+    hidden: np.ndarray  # bool per vertex row
+    owner: np.ndarray  # int64 per piece: its wall entity
+    index: np.ndarray  # int64 per piece: its index among that wall's pieces
+    grid: BoxGrid
     body: Body = field(default_factory=lambda: Body(x=0.0, y=0.0))
+
+    @classmethod
+    def of(cls, walls: Sequence[tuple[int, Wall]], cell_size: float) -> StaticWorld:
+        """From (entity, wall) pairs, their seams already marked (assemble.mark_seams)."""
+        found = [(ent, wall, k) for ent, wall in walls for k in range(len(wall.pieces))]
+        pieces = ConvexSet.of([w.pieces[k] for _, w, k in found], [w.normals[k] for _, w, k in found])
+
+        def rows(marks: str) -> np.ndarray:
+            return np.array([v in getattr(w, marks)[k] if getattr(w, marks) else False
+                             for _, w, k in found for v in range(len(w.pieces[k]))], dtype=np.bool_)
+
+        boxes = np.array([w.piece_aabbs[k] for _, w, k in found], dtype=np.float64).reshape(-1, 4)
+        return cls(pieces=pieces, internal=rows("internal"), hidden=rows("hidden"),
+                   owner=np.array([e for e, _, _ in found], dtype=np.int64),
+                   index=np.array([k for _, _, k in found], dtype=np.int64), grid=BoxGrid(boxes, cell_size))
 
 
 @dataclass(slots=True)
 class Candidates:
-    """Broadphase -> narrowphase: body entity -> (wall entity, piece) pairs, and body pairs."""
+    """Broadphase -> narrowphase: body entity -> the wall pieces near it (rows of the static world's
+    pieces, ascending), and body pairs."""
 
-    walls: dict[int, list[tuple[int, int]]] = field(default_factory=dict)
+    walls: dict[int, np.ndarray] = field(default_factory=dict)
     pairs: list[tuple[int, int]] = field(default_factory=list)
 
 

@@ -185,13 +185,16 @@ def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndar
 @kernel
 def collide_sets(va: np.ndarray, na: np.ndarray, fa: np.ndarray, vb: np.ndarray, nb: np.ndarray, fb: np.ndarray,
                  pieces_b: np.ndarray, internal: np.ndarray, hidden: np.ndarray, seams: bool, margin: float,
-                 out: np.ndarray) -> int:
+                 b_outer: bool, out: np.ndarray) -> int:
     """Every contact between the pieces of A (`fa` ranges of va/na, world coordinates) and the
-    pieces of B listed in `pieces_b`, A's piece by piece, B's in the listed order; rows with the two
-    piece indices. `out` needs 2·(A's pieces)·len(pieces_b) rows. Returns the rows written."""
+    pieces of B listed in `pieces_b`: A's pieces in the outer loop, or B's if `b_outer` (a body
+    against wall pieces, judged piece by piece). Rows carry the two piece indices; `out` needs
+    2·(A's pieces)·len(pieces_b) rows. Returns the rows written."""
     rows = 0
-    for i in range(len(fa) - 1):
-        for jj in range(len(pieces_b)):
+    count_a, count_b = len(fa) - 1, len(pieces_b)
+    for outer in range(count_b if b_outer else count_a):
+        for inner in range(count_a if b_outer else count_b):
+            i, jj = (inner, outer) if b_outer else (outer, inner)
             j = pieces_b[jj]
             made = collide_convex(va, na, fa[i], fa[i + 1], vb, nb, fb[j], fb[j + 1], internal, hidden, seams,
                                   margin, out, rows)
@@ -262,4 +265,4 @@ def _warm() -> None:
     va, na = _rows(square), _rows(normals)
     first = np.array([0, 4], dtype=np.int64)
     collide_sets(va, na, first, _rows(lifted), na, first, np.zeros(1, dtype=np.int64), NO_SEAMS, NO_SEAMS, False,
-                 0.01, np.empty((2, ROW)))
+                 0.01, False, np.empty((2, ROW)))

@@ -9,10 +9,11 @@ points that span the contact, and the solver treats those two points as one bloc
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from polygolf.engine.physics.body import Body, Material
-from polygolf.engine.physics.collide import RawContact, collide_polygons
+from polygolf.engine.physics.collide import CLIP_X, CLIP_Y, FACE_X, FACE_Y, NX, NY, REF_IS_A, SEP, X, Y
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 
 # Normals closer than this (cosine) are the same contact plane.
@@ -75,16 +76,18 @@ def _rotate_to_local(body: Body, x: float, y: float) -> tuple[float, float]:
     return c * x + s * y, -s * x + c * y
 
 
-def make_point(raw: RawContact, normal: tuple[float, float], key: tuple, body_a: Body, body_b: Body,
-               material: Material, ngs: bool) -> ContactPoint:
-    point = ContactPoint(x=raw.x, y=raw.y, separation=raw.separation, key=key,
-                         restitution=material.restitution, friction=material.friction, ref_is_a=raw.ref_is_a)
+def make_point(row: list[float], key: tuple, body_a: Body, body_b: Body, material: Material,
+               ngs: bool) -> ContactPoint:
+    """A solver point from a contact row of `collide.collide_sets` (a list, as `tolist` gives)."""
+    ref_is_a = row[REF_IS_A] != 0.0
+    point = ContactPoint(x=row[X], y=row[Y], separation=row[SEP], key=key, restitution=material.restitution,
+                         friction=material.friction, ref_is_a=ref_is_a)
     if ngs:
-        ref, inc = (body_a, body_b) if raw.ref_is_a else (body_b, body_a)
-        face_normal = normal if raw.ref_is_a else (-normal[0], -normal[1])
+        ref, inc = (body_a, body_b) if ref_is_a else (body_b, body_a)
+        face_normal = (row[NX], row[NY]) if ref_is_a else (-row[NX], -row[NY])
         point.local_normal = _rotate_to_local(ref, *face_normal)
-        point.local_face = _to_local(ref, raw.face_x, raw.face_y)
-        point.local_clip = _to_local(inc, raw.clip_x, raw.clip_y)
+        point.local_face = _to_local(ref, row[FACE_X], row[FACE_Y])
+        point.local_clip = _to_local(inc, row[CLIP_X], row[CLIP_Y])
     return point
 
 
@@ -134,23 +137,11 @@ def persistent_impulses(manifolds: list[Manifold]) -> Carried:
     return carried
 
 
-def collide_pieces(pieces_a, normals_a, pieces_b, normals_b, margin: float, body_a: Body, body_b: Body,
-                   material: Material, ngs: bool, key, seams_b=None) -> list[tuple[float, float, ContactPoint]]:
-    """(normal, point) for every pair of convex pieces within `margin`; `key(i, j, feature)` names a
-    point so it can be matched in the next substep. `seams_b`: per piece of B, its (internal edges,
-    hidden vertices) when B is a wall (physics.seams)."""
-    raw: list[tuple[float, float, ContactPoint]] = []
-    for i in range(len(pieces_a)):
-        for j in range(len(pieces_b)):
-            internal, hidden = seams_b[j] if seams_b else (frozenset(), frozenset())
-            hit = collide_polygons(pieces_a[i], normals_a[i], pieces_b[j], normals_b[j], margin, internal, hidden)
-            if hit is None:
-                continue
-            normal, contacts = hit
-            for rc in contacts:
-                raw.append((normal[0], normal[1],
-                            make_point(rc, normal, key(i, j, rc.feature), body_a, body_b, material, ngs)))
-    return raw
+def contact_points(rows: list[list[float]], body_a: Body, body_b: Body, material: Material, ngs: bool,
+                   key: Callable[[list[float]], tuple]) -> list[tuple[float, float, ContactPoint]]:
+    """(normal, point) for every contact row between two bodies; `key(row)` names a point so it can
+    be matched in the next substep."""
+    return [(row[NX], row[NY], make_point(row, key(row), body_a, body_b, material, ngs)) for row in rows]
 
 
 def add_manifolds(out: list[Manifold], raw: list[tuple[float, float, ContactPoint]], entity_a: int, entity_b: int,

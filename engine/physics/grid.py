@@ -1,93 +1,203 @@
-"""Uniform grid of bounding boxes: the broadphase's spatial index.
+"""Bounding boxes: a uniform grid over a fixed set of them, and every overlapping pair of a set.
 
-Each item is filed under every cell its box touches; a query looks only at the cells its own box
-touches, so the work grows with the neighbourhood, not with the number of items. Neither can blow
-up: an item spanning more than MAX_CELLS cells is kept on a short list that every query checks, and a
-query spanning more cells than there are items checks the items instead.
+`BoxGrid` files each box under every cell it touches, once, when it is built (the walls of a world,
+or this substep's windmill arms); a query looks only at the cells its own box touches, so the work
+grows with the neighbourhood, not with the number of boxes. Neither can blow up: a box spanning more
+than MAX_CELLS cells is kept on a short list every query checks, and a query spanning more cells
+than there are boxes checks the boxes instead. `box_pairs` sweeps a set of boxes sorted along x (the
+bodies, which move every substep, so no grid is kept for them).
+
+Boxes are rows (min x, min y, max x, max y) of a float64 array; answers are row indices, ascending.
 """
 
 from __future__ import annotations
 
-import math
-from collections import defaultdict
-from collections.abc import Hashable, Iterator
+import numpy as np
 
-AABB = tuple[float, float, float, float]  # min x, min y, max x, max y
-MAX_CELLS = 256  # cells one item may be filed under
+from polygolf.engine.physics.jit import kernel, warm_up
+
+MAX_CELLS = 256  # cells one box may be filed under
+MAX_GRID = 1 << 20  # cells in a grid; a coarser cell is taken beyond it
 
 
-def overlaps(a: AABB, b: AABB) -> bool:
+@kernel
+def overlaps(a: np.ndarray, b: np.ndarray) -> bool:
     return a[0] <= b[2] and b[0] <= a[2] and a[1] <= b[3] and b[1] <= a[3]
 
 
-class SpatialGrid:
-    def __init__(self, cell_size: float) -> None:
-        if cell_size <= 0.0:
+@kernel
+def _cell(value: float, origin: float, inv: float, count: int) -> int:
+    """The cell index of a coordinate, clamped to the grid (every filed box lies inside it; a
+    coordinate beyond it, infinite or not a number is clamped too)."""
+    f = (value - origin) * inv
+    if not f >= 0.0:
+        return 0
+    if f >= count:
+        return count - 1
+    return int(f)
+
+
+@kernel
+def _cell_range(box: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int) -> tuple[int, int, int, int]:
+    """The cells a box touches."""
+    return (_cell(box[0], x0, inv, nx), _cell(box[1], y0, inv, ny),
+            _cell(box[2], x0, inv, nx), _cell(box[3], y0, inv, ny))
+
+
+@kernel
+def _file(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int
+          ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(cell_first, cell_items, large): box indices by cell, in compressed rows, and the boxes too
+    large to file cell by cell."""
+    counts = np.zeros(nx * ny + 1, dtype=np.int64)
+    large = np.zeros(len(boxes), dtype=np.bool_)
+    for i in range(len(boxes)):
+        cx0, cy0, cx1, cy1 = _cell_range(boxes[i], x0, y0, inv, nx, ny)
+        if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > MAX_CELLS:
+            large[i] = True
+            continue
+        for cy in range(cy0, cy1 + 1):
+            for cx in range(cx0, cx1 + 1):
+                counts[cy * nx + cx + 1] += 1
+    first = np.cumsum(counts)
+    items = np.empty(first[-1], dtype=np.int64)
+    fill = first[:-1].copy()
+    for i in range(len(boxes)):
+        if large[i]:
+            continue
+        cx0, cy0, cx1, cy1 = _cell_range(boxes[i], x0, y0, inv, nx, ny)
+        for cy in range(cy0, cy1 + 1):
+            for cx in range(cx0, cx1 + 1):
+                items[fill[cy * nx + cx]] = i
+                fill[cy * nx + cx] += 1
+    return first, items, np.nonzero(large)[0]
+
+
+@kernel
+def _query(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int, cell_first: np.ndarray,
+           cell_items: np.ndarray, large: np.ndarray, box: np.ndarray, seen: np.ndarray, out: np.ndarray) -> int:
+    """Indices of the boxes overlapping `box` into `out`, ascending; returns how many. `seen` (one
+    flag per box, all False) is left all False."""
+    count = 0
+    if len(boxes) == 0:
+        return 0
+    cx0, cy0, cx1, cy1 = _cell_range(box, x0, y0, inv, nx, ny)
+    if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > len(boxes):  # wider than there are boxes: each box once
+        for i in range(len(boxes)):
+            if overlaps(box, boxes[i]):
+                out[count] = i
+                count += 1
+        return count
+    for cy in range(cy0, cy1 + 1):
+        for cx in range(cx0, cx1 + 1):
+            cell = cy * nx + cx
+            for k in range(cell_first[cell], cell_first[cell + 1]):
+                i = cell_items[k]
+                if not seen[i] and overlaps(box, boxes[i]):
+                    seen[i] = True
+                    out[count] = i
+                    count += 1
+    for i in large:
+        if overlaps(box, boxes[i]):
+            out[count] = i
+            count += 1
+    for k in range(count):
+        seen[out[k]] = False
+    out[:count].sort()
+    return count
+
+
+@kernel
+def _query_many(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int, cell_first: np.ndarray,
+                cell_items: np.ndarray, large: np.ndarray, queries: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """For every query box, the boxes it overlaps: (first, items) in compressed rows."""
+    seen = np.zeros(len(boxes), dtype=np.bool_)
+    scratch = np.empty(len(boxes), dtype=np.int64)
+    first = np.zeros(len(queries) + 1, dtype=np.int64)
+    found = np.empty(16, dtype=np.int64)
+    total = 0
+    for q in range(len(queries)):
+        n = _query(boxes, x0, y0, inv, nx, ny, cell_first, cell_items, large, queries[q], seen, scratch)
+        while total + n > len(found):
+            grown = np.empty(2 * len(found), dtype=np.int64)
+            grown[:total] = found[:total]
+            found = grown
+        found[total:total + n] = scratch[:n]
+        total += n
+        first[q + 1] = total
+    return first, found[:total].copy()
+
+
+@kernel
+def box_pairs(boxes: np.ndarray, active: np.ndarray) -> np.ndarray:
+    """Every pair (i, j), i < j, of overlapping boxes of which at least one is `active`, sorted:
+    a sweep along x."""
+    order = np.argsort(boxes[:, 0], kind="mergesort")
+    pairs = np.empty((16, 2), dtype=np.int64)
+    count = 0
+    for a in range(len(order)):
+        i = order[a]
+        for b in range(a + 1, len(order)):
+            j = order[b]
+            if boxes[j, 0] > boxes[i, 2]:
+                break
+            if (active[i] or active[j]) and boxes[j, 1] <= boxes[i, 3] and boxes[i, 1] <= boxes[j, 3]:
+                if count == len(pairs):
+                    grown = np.empty((2 * len(pairs), 2), dtype=np.int64)
+                    grown[:count] = pairs[:count]
+                    pairs = grown
+                pairs[count, 0], pairs[count, 1] = min(i, j), max(i, j)
+                count += 1
+    out = pairs[:count].copy()
+    keys = out[:, 0] * (len(boxes) + 1) + out[:, 1]
+    return out[np.argsort(keys, kind="mergesort")]
+
+
+class BoxGrid:
+    """A uniform grid over a fixed set of boxes ((n, 4) float64)."""
+
+    def __init__(self, boxes: np.ndarray, cell_size: float) -> None:
+        if not cell_size > 0.0:
             raise ValueError("cell size must be positive")
+        self.boxes = np.ascontiguousarray(boxes, dtype=np.float64).reshape(-1, 4)
+        if len(self.boxes):
+            self.x0, self.y0 = float(self.boxes[:, 0].min()), float(self.boxes[:, 1].min())
+            width = float(self.boxes[:, 2].max()) - self.x0
+            height = float(self.boxes[:, 3].max()) - self.y0
+        else:
+            self.x0 = self.y0 = width = height = 0.0
+        while (width / cell_size + 1.0) * (height / cell_size + 1.0) > MAX_GRID:
+            cell_size *= 2.0
         self.cell_size = cell_size
-        self._cells: dict[tuple[int, int], list[tuple[Hashable, AABB]]] = defaultdict(list)
-        self._large: list[tuple[Hashable, AABB]] = []  # items too big to file cell by cell
-        self._items: list[tuple[Hashable, AABB]] = []  # every item once, for a query wider than the items
-
-    def _cell_range(self, box: AABB) -> tuple[int, int, int, int]:
-        inv = 1.0 / self.cell_size
-        return (math.floor(box[0] * inv), math.floor(box[1] * inv),
-                math.floor(box[2] * inv), math.floor(box[3] * inv))
-
-    def insert(self, item: Hashable, box: AABB) -> None:
-        self._items.append((item, box))
-        x0, y0, x1, y1 = self._cell_range(box)
-        if (x1 - x0 + 1) * (y1 - y0 + 1) > MAX_CELLS:
-            self._large.append((item, box))
-            return
-        for cx in range(x0, x1 + 1):
-            for cy in range(y0, y1 + 1):
-                self._cells[cx, cy].append((item, box))
+        self.inv = 1.0 / cell_size
+        self.nx, self.ny = int(width * self.inv) + 1, int(height * self.inv) + 1
+        self.cell_first, self.cell_items, self.large = _file(self.boxes, self.x0, self.y0, self.inv, self.nx, self.ny)
+        self._seen = np.zeros(len(self.boxes), dtype=np.bool_)
+        self._out = np.empty(len(self.boxes), dtype=np.int64)
 
     def __len__(self) -> int:
-        return len(self._items)
+        return len(self.boxes)
 
-    def clear(self) -> None:
-        self._cells.clear()
-        self._large.clear()
-        self._items.clear()
+    @property
+    def arrays(self) -> tuple:
+        """What a kernel needs to query the grid itself (the arguments of `_query` before `box`)."""
+        return (self.boxes, self.x0, self.y0, self.inv, self.nx, self.ny, self.cell_first, self.cell_items,
+                self.large)
 
-    def query(self, box: AABB) -> list[Hashable]:
-        """Items whose boxes overlap `box`, each once."""
-        x0, y0, x1, y1 = self._cell_range(box)
-        cells = self._cells
-        large = [item for item, other in self._large if overlaps(box, other)] if self._large else []
-        if x0 == x1 and y0 == y1:
-            found = [item for item, other in cells.get((x0, y0), ()) if overlaps(box, other)]
-            return found + large if large else found
-        if (x1 - x0 + 1) * (y1 - y0 + 1) > len(self._items):  # wider than there are items: each item once
-            return [item for item, other in self._items if overlaps(box, other)]
-        seen: dict[Hashable, None] = {}
-        for cx in range(x0, x1 + 1):
-            for cy in range(y0, y1 + 1):
-                for item, other in cells.get((cx, cy), ()):
-                    if item not in seen and overlaps(box, other):
-                        seen[item] = None
-        return list(seen) + large if large else list(seen)
+    def query(self, box) -> np.ndarray:
+        """Indices of the boxes overlapping `box`, ascending."""
+        count = _query(*self.arrays, np.asarray(box, dtype=np.float64), self._seen, self._out)
+        return self._out[:count].copy()
 
-    def pairs(self) -> Iterator[tuple[Hashable, Hashable]]:
-        """Every pair of items whose boxes overlap, each once, in a stable order."""
-        seen: set[tuple[Hashable, Hashable]] = set()
-        for item_a, box_a in self._large:
-            for item_b in self.query(box_a):
-                key = (item_a, item_b) if item_a < item_b else (item_b, item_a)  # type: ignore[operator]
-                if item_b != item_a and key not in seen:
-                    seen.add(key)
-                    yield key
-        for members in self._cells.values():
-            count = len(members)
-            for i in range(count):
-                item_a, box_a = members[i]
-                for j in range(i + 1, count):
-                    item_b, box_b = members[j]
-                    if not overlaps(box_a, box_b):
-                        continue
-                    key = (item_a, item_b) if item_a < item_b else (item_b, item_a)  # type: ignore[operator]
-                    if key not in seen:
-                        seen.add(key)
-                        yield key
+    def query_many(self, queries: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The boxes each query box overlaps, as compressed rows: query q's are items[first[q]:first[q+1]]."""
+        return _query_many(*self.arrays, np.ascontiguousarray(queries, dtype=np.float64).reshape(-1, 4))
+
+
+@warm_up("grid")
+def _warm() -> None:
+    boxes = np.array([[0.0, 0.0, 1.0, 1.0], [0.5, 0.5, 2.0, 2.0], [-500.0, -500.0, 500.0, -400.0]])
+    grid = BoxGrid(boxes, 1.0)
+    grid.query((0.2, 0.2, 0.6, 0.6))
+    grid.query_many(boxes)
+    box_pairs(boxes, np.ones(3, dtype=np.bool_))

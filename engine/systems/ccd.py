@@ -1,13 +1,14 @@
 import math
 
 import esper
+import numpy as np
 
-from polygolf.engine.components import Body, Collider, Wall
+from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
-from polygolf.engine.physics.collide import max_separation
-from polygolf.engine.physics.grid import SpatialGrid
+from polygolf.engine.physics.collide import NO_SEAMS, max_separation
+from polygolf.engine.physics.grid import BoxGrid, box_pairs
 from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP, TOI_TARGET
-from polygolf.engine.physics.toi import pair_time_of_impact, time_of_impact
+from polygolf.engine.physics.toi import first_pair_hit, first_wall_hit
 
 
 class CCDProcessor(esper.Processor):
@@ -25,7 +26,6 @@ class CCDProcessor(esper.Processor):
 
     def __init__(self, res: Resources) -> None:
         self.statics, self.stats, self.config = res.statics, res.stats, res.config
-        self._swept = SpatialGrid(res.statics.grid.cell_size)
 
     def process(self) -> None:
         bodies = esper.get_components(Body, Collider)
@@ -61,16 +61,13 @@ class CCDProcessor(esper.Processor):
         s = body.scratch
         r = col.radius + TOI_TARGET
         box = (min(s.x0, body.x) - r, min(s.y0, body.y) - r, max(s.x0, body.x) + r, max(s.y0, body.y) + r)
-        start, end = (s.x0, s.y0, s.angle0), (body.x, body.y, body.angle)
-        first = 1.0
-        for wall_ent, k in self.statics.grid.query(box):
-            wall = esper.component_for_entity(wall_ent, Wall)
-            for i, piece in enumerate(col.pieces):
-                t = time_of_impact(piece, col.normals[i], col.piece_reach[i], start, end,
-                                   wall.pieces[k], wall.normals[k], TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP)
-                if t is not None and t < first:
-                    first = t
-        return first
+        found = self.statics.grid.query(box)
+        if not len(found):
+            return 1.0
+        walls, shape = self.statics.pieces, col.shape
+        return first_wall_hit(shape.verts, shape.normals, shape.first, shape.reach, _start(body), _end(body),
+                              walls.verts, walls.normals, walls.first, found, TOI_TARGET, 0.25 * LINEAR_SLOP,
+                              LINEAR_SLOP)
 
     def _pinched(self, body: Body, col: Collider, arm: Body, arm_col: Collider, t: float) -> bool:
         """Whether the arm, meeting the body at fraction `t` of the substep, drives it into a wall it
@@ -78,49 +75,54 @@ class CCDProcessor(esper.Processor):
         body at the impact) points at least 15° into that wall's face. A body it meets
         along the wall, or away from one, is pushed as usual."""
         sa = arm.scratch
-        arm_pieces, arm_normals = arm_col.world(sa.x0 + t * (arm.x - sa.x0), sa.y0 + t * (arm.y - sa.y0),
-                                                sa.angle0 + t * (arm.angle - sa.angle0))
-        pieces, normals = col.world(body.x, body.y, body.angle)
+        arm_verts, arm_normals = arm_col.posed(sa.x0 + t * (arm.x - sa.x0), sa.y0 + t * (arm.y - sa.y0),
+                                               sa.angle0 + t * (arm.angle - sa.angle0))
+        verts, normals = col.posed(body.x, body.y, body.angle)
+        arm_first, first = arm_col.shape.first, col.shape.first
         best, push = -math.inf, (0.0, 0.0)
-        for av, an in zip(arm_pieces, arm_normals):
-            for bv, bn in zip(pieces, normals):
-                gap, face = max_separation(av, an, bv)
+        for i in range(len(arm_col.shape)):
+            for j in range(len(col.shape)):
+                gap, face = max_separation(arm_verts, arm_normals, arm_first[i], arm_first[i + 1], verts, first[j],
+                                           first[j + 1], NO_SEAMS, -1)
                 if gap > best:
-                    best, push = gap, an[face]
-                gap, face = max_separation(bv, bn, av)
+                    row = arm_first[i] + face
+                    best, push = gap, (arm_normals[row, 0], arm_normals[row, 1])
+                gap, face = max_separation(verts, normals, first[j], first[j + 1], arm_verts, arm_first[i],
+                                           arm_first[i + 1], NO_SEAMS, -1)
                 if gap > best:
-                    best, push = gap, (-bn[face][0], -bn[face][1])
+                    row = first[j] + face
+                    best, push = gap, (-normals[row, 0], -normals[row, 1])
         r = col.radius + CONTACT_MARGIN
-        for wall_ent, k in self.statics.grid.query((body.x - r, body.y - r, body.x + r, body.y + r)):
-            wall = esper.component_for_entity(wall_ent, Wall)
-            for verts in pieces:
-                gap, face = max_separation(wall.pieces[k], wall.normals[k], verts)
-                nx, ny = wall.normals[k][face]  # out of the wall, towards the body
+        walls = self.statics.pieces
+        for g in self.statics.grid.query((body.x - r, body.y - r, body.x + r, body.y + r)):
+            for j in range(len(col.shape)):
+                gap, face = max_separation(walls.verts, walls.normals, walls.first[g], walls.first[g + 1], verts,
+                                           first[j], first[j + 1], NO_SEAMS, -1)
+                row = walls.first[g] + face
+                nx, ny = walls.normals[row, 0], walls.normals[row, 1]  # out of the wall, towards the body
                 if gap < CONTACT_MARGIN and push[0] * nx + push[1] * ny < -0.25:
                     return True
         return False
 
     def _body_hits(self, bodies: list, first: dict[int, float]) -> None:
         """Pairs of bodies whose swept boxes overlap and that move fast relative to each other."""
-        grid = self._swept
-        grid.clear()
         meet = self.config.collide_bodies
-
-        def swept(body: Body, col: Collider) -> tuple[float, float, float, float]:
-            s, r = body.scratch, col.radius + TOI_TARGET
-            return min(s.x0, body.x) - r, min(s.y0, body.y) - r, max(s.x0, body.x) + r, max(s.y0, body.y) + r
-
         if meet:
-            for ent, (body, col) in bodies:
-                grid.insert(ent, swept(body, col))
-            candidates = grid.pairs()
+            everyone = [(ent, body, col) for ent, (body, col) in bodies]
+            active = np.array([_moving(body) for _, body, _ in everyone], dtype=np.bool_)
+            candidates = [(min(everyone[i][0], everyone[j][0]), max(everyone[i][0], everyone[j][0]))
+                          for i, j in box_pairs(_swept(everyone), active).tolist()]
         else:  # bodies meet kinematic ones only: index those, look each moving body up (K shots: no K²)
-            for ent, (body, col) in bodies:
-                if not body.inv_mass:
-                    grid.insert(ent, swept(body, col))
-            candidates = [(min(ent, k), max(ent, k)) for ent, (body, col) in bodies
-                          if body.inv_mass and not body.asleep and grid for k in grid.query(swept(body, col))]
-        for ea, eb in candidates:
+            kinematic = [(ent, body, col) for ent, (body, col) in bodies if not body.inv_mass]
+            moving = [(ent, body, col) for ent, (body, col) in bodies if body.inv_mass and not body.asleep]
+            candidates = []
+            if kinematic and moving:
+                found_first, found = BoxGrid(_swept(kinematic), self.statics.grid.cell_size).query_many(
+                    _swept(moving))
+                found = found.tolist()
+                candidates = [(min(ent, kinematic[k][0]), max(ent, kinematic[k][0]))
+                              for q, (ent, _, _) in enumerate(moving) for k in found[found_first[q]:found_first[q + 1]]]
+        for ea, eb in sorted(candidates):
             a, col_a = esper.component_for_entity(ea, Body), esper.component_for_entity(ea, Collider)
             b, col_b = esper.component_for_entity(eb, Body), esper.component_for_entity(eb, Collider)
             if not (a.inv_mass or b.inv_mass) or (a.inv_mass and b.inv_mass and not meet):
@@ -130,30 +132,38 @@ class CCDProcessor(esper.Processor):
             # Against a kinematic body (a windmill's arm) any step beyond the slop is swept, as against
             # a wall; two dynamic bodies only when their steps could carry one half through the other
             # (cheaper in a crowd; the discrete contact then parts the overlap that is left).
-            kinematic = not (a.inv_mass and b.inv_mass)
-            limit = LINEAR_SLOP if kinematic else 0.5 * min(col_a.thickness, col_b.thickness)
+            kinematic_pair = not (a.inv_mass and b.inv_mass)
+            limit = LINEAR_SLOP if kinematic_pair else 0.5 * min(col_a.thickness, col_b.thickness)
             if _relative_travel(a, col_a, b, col_b) < limit:
                 continue
-            sa, sb = a.scratch, b.scratch
-            start_a, end_a = (sa.x0, sa.y0, sa.angle0), (a.x, a.y, a.angle)
-            start_b, end_b = (sb.x0, sb.y0, sb.angle0), (b.x, b.y, b.angle)
-            hit = 1.0
-            for i, piece_a in enumerate(col_a.pieces):
-                for j, piece_b in enumerate(col_b.pieces):
-                    t = pair_time_of_impact(piece_a, col_a.normals[i], col_a.piece_reach[i], start_a, end_a,
-                                            piece_b, col_b.normals[j], col_b.piece_reach[j], start_b, end_b,
-                                            TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP)
-                    if t is not None and t < hit:
-                        hit = t
+            sa, sb = col_a.shape, col_b.shape
+            hit = first_pair_hit(sa.verts, sa.normals, sa.first, sa.reach, _start(a), _end(a), sb.verts, sb.normals,
+                                 sb.first, sb.reach, _start(b), _end(b), TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP)
             if hit < 1.0:
                 for ent, body in ((ea, a), (eb, b)):
                     if body.inv_mass and not body.asleep:
                         first[ent] = min(first.get(ent, 1.0), hit)
-                if kinematic:
+                if kinematic_pair:
                     (arm, arm_ent, arm_col), (ball, col) = (((a, ea, col_a), (b, col_b)) if not a.inv_mass
                                                             else ((b, eb, col_b), (a, col_a)))
                     if self._pinched(ball, col, arm, arm_col, hit):
                         first[arm_ent] = min(first.get(arm_ent, 1.0), hit)
+
+
+def _start(body: Body) -> np.ndarray:
+    s = body.scratch
+    return np.array((s.x0, s.y0, s.angle0))
+
+
+def _end(body: Body) -> np.ndarray:
+    return np.array((body.x, body.y, body.angle))
+
+
+def _swept(bodies: list[tuple[int, Body, Collider]]) -> np.ndarray:
+    """The box each body's motion this substep sweeps, grown by the impact distance."""
+    return np.array([(min(s.x0, body.x) - r, min(s.y0, body.y) - r, max(s.x0, body.x) + r, max(s.y0, body.y) + r)
+                     for _, body, col in bodies for s, r in ((body.scratch, col.radius + TOI_TARGET),)],
+                    dtype=np.float64).reshape(-1, 4)
 
 
 def _moving(body: Body) -> bool:

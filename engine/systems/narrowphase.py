@@ -1,12 +1,14 @@
 from collections import Counter
 
 import esper
+import numpy as np
 
 from polygolf.engine.components import Body, Collider, Wall
 from polygolf.engine.components.resources import Resources
-from polygolf.engine.physics.contact import Manifold, add_manifolds, collide_pieces, combine
+from polygolf.engine.physics.collide import FEATURE, NO_SEAMS, NX, NY, PIECE_A, PIECE_B, ROW, SEP, collide_sets
+from polygolf.engine.physics.contact import Manifold, add_manifolds, combine, contact_points, make_point
 from polygolf.engine.physics.settings import CONTACT_MARGIN, GAP_TOLERANCE
-from polygolf.engine.physics.toi import pair_reaches, reaches
+from polygolf.engine.physics.toi import pair_reaches, reaches_wall
 
 
 class NarrowphaseProcessor(esper.Processor):
@@ -42,19 +44,20 @@ class NarrowphaseProcessor(esper.Processor):
             reach = col_a.radius + col_b.radius + CONTACT_MARGIN
             if (a.x - b.x) ** 2 + (a.y - b.y) ** 2 > reach * reach:
                 continue
-            raw = collide_pieces(*col_a.world(a.x, a.y, a.angle), *col_b.world(b.x, b.y, b.angle), CONTACT_MARGIN,
-                                 a, b, combine(col_a.material, col_b.material), ngs,
-                                 lambda i, j, feature: (j, i, feature))
-            if raw:
+            rows = _body_rows(col_a, a, col_b, b)
+            if rows:
+                raw = contact_points(rows, a, b, combine(col_a.material, col_b.material), ngs,
+                                     lambda row: (int(row[PIECE_B]), int(row[PIECE_A]), int(row[FEATURE])))
                 pairs.append((ea, eb, a, b, raw))
-                near.append((col_a, col_b, min(p.separation for _, _, p in raw)))
+                near.append((col_a, col_b, min(row[SEP] for row in rows)))
         # A body with something else near (a wall or another body) may be halted by it in the solve.
         busy = Counter(e for ea, eb, *_ in pairs for e in (ea, eb))
         if pairs:
             busy.update(self.candidates.walls.keys())
         for (ea, eb, a, b, _), (col_a, col_b, gap) in zip(pairs, near):
-            gapped.append(gap > GAP_TOLERANCE
-                          and not pair_reaches(col_a, a, col_b, b, dt, gap, busy[ea] > 1, busy[eb] > 1))
+            gapped.append(gap > GAP_TOLERANCE and not pair_reaches(
+                *_arrays(col_a), col_a.radius, _pose(a), _velocity(a), *_arrays(col_b), col_b.radius, _pose(b),
+                _velocity(b), dt, gap, busy[ea] > 1, busy[eb] > 1))
         pressed = {e for (ea, eb, *_), gap in zip(pairs, gapped) if not gap for e in (ea, eb)}
         grew = bool(pressed)
         while grew:  # through a chain of gaps, a push can reach: keep those contacts too
@@ -64,21 +67,41 @@ class NarrowphaseProcessor(esper.Processor):
                     gapped[k], grew = False, True
                     pressed |= {ea, eb}
 
+        walls = self.statics.pieces
         for ent, found in self.candidates.walls.items():
             body, col = esper.component_for_entity(ent, Body), esper.component_for_entity(ent, Collider)
-            pieces, normals = col.world(body.x, body.y, body.angle)
-            raw = []
-            for wall_ent, k in found:
-                wall = esper.component_for_entity(wall_ent, Wall)
-                hits = collide_pieces(pieces, normals, (wall.pieces[k],), (wall.normals[k],), CONTACT_MARGIN, body,
-                                      static, combine(col.material, wall.material), ngs,
-                                      lambda i, _j, feature, w=wall_ent, k=k: (w, k, i, feature),
-                                      ((wall.internal[k], wall.hidden[k]),))
-                if hits and ent not in pressed and min(p.separation for _, _, p in hits) > GAP_TOLERANCE \
-                        and not reaches(col, body, wall.pieces[k], wall.normals[k], dt):
-                    continue  # a gap this substep's motion will not close: nothing touches, nothing acts
-                raw += hits
-            if raw:
+            verts, normals = col.posed(body.x, body.y, body.angle)
+            out = np.empty((2 * len(col.shape) * len(found), ROW))
+            count = collide_sets(verts, normals, col.shape.first, walls.verts, walls.normals, walls.first, found,
+                                 self.statics.internal, self.statics.hidden, True, CONTACT_MARGIN, True, out)
+            if not count:
+                continue
+            rows = out[:count].tolist()
+            kept: list[list[float]] = []
+            k = 0
+            while k < count:  # piece by piece of wall
+                piece = rows[k][PIECE_B]
+                end = k + 1
+                while end < count and rows[end][PIECE_B] == piece:
+                    end += 1
+                g = int(piece)
+                if ent in pressed or min(row[SEP] for row in rows[k:end]) <= GAP_TOLERANCE or reaches_wall(
+                        *_arrays(col), _pose(body), _velocity(body), dt, walls.verts, walls.normals,
+                        walls.first[g], walls.first[g + 1]):
+                    kept += rows[k:end]
+                # else: a gap this substep's motion will not close: nothing touches, nothing acts
+                k = end
+            if kept:
+                owner, index = self.statics.owner, self.statics.index
+                materials = {}
+                raw = []
+                for row in kept:
+                    g = int(row[PIECE_B])
+                    wall_ent = int(owner[g])
+                    if wall_ent not in materials:
+                        materials[wall_ent] = combine(col.material, esper.component_for_entity(wall_ent, Wall).material)
+                    key = (wall_ent, int(index[g]), int(row[PIECE_A]), int(row[FEATURE]))
+                    raw.append((row[NX], row[NY], make_point(row, key, body, static, materials[wall_ent], ngs)))
                 deepest = max(deepest, add_manifolds(manifolds, raw, ent, -1, body, static, carried))
 
         for (ea, eb, a, b, raw), gap in zip(pairs, gapped):
@@ -92,3 +115,26 @@ class NarrowphaseProcessor(esper.Processor):
         self.contacts.manifolds = manifolds
         self.contacts.touching = {m.entity_a for m in manifolds} | {m.entity_b for m in manifolds}
         self.stats.max_penetration = deepest
+
+
+def _arrays(col: Collider) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    shape = col.shape
+    return shape.verts, shape.normals, shape.first, shape.reach
+
+
+def _pose(body: Body) -> np.ndarray:
+    return np.array((body.x, body.y, body.angle))
+
+
+def _velocity(body: Body) -> np.ndarray:
+    return np.array((body.vx, body.vy, body.spin))
+
+
+def _body_rows(col_a: Collider, a: Body, col_b: Collider, b: Body) -> list[list[float]]:
+    """Contact rows between two bodies, A's pieces in the outer loop."""
+    va, na = col_a.posed(a.x, a.y, a.angle)
+    vb, nb = col_b.posed(b.x, b.y, b.angle)
+    out = np.empty((2 * len(col_a.shape) * len(col_b.shape), ROW))
+    count = collide_sets(va, na, col_a.shape.first, vb, nb, col_b.shape.first, np.arange(len(col_b.shape)),
+                         NO_SEAMS, NO_SEAMS, False, CONTACT_MARGIN, False, out)
+    return out[:count].tolist()

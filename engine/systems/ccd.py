@@ -31,16 +31,25 @@ class CCDProcessor(esper.Processor):
         bodies = esper.get_components(Body, Collider)
         first: dict[int, float] = {}
         longest = 0.0  # the longest step of an awake body
+        sweep = []  # bodies whose step could skip something: small motions cannot, the discrete contact handles them
         for ent, (body, col) in bodies:
             if body.asleep:
                 continue
             travel = _travel(body, col)
             longest = max(longest, travel)
-            if body.inv_mass == 0.0 or travel < LINEAR_SLOP:
-                continue  # small motions cannot skip anything: the discrete contact handles them
-            t = self._first_wall_hit(body, col)
-            if t < 1.0:
-                first[ent] = t
+            if body.inv_mass and travel >= LINEAR_SLOP:
+                sweep.append((ent, body, col))
+        if sweep and len(self.statics.grid):
+            walls = self.statics.pieces
+            starts, found = self.statics.grid.query_many(_swept(sweep))
+            for q, (ent, body, col) in enumerate(sweep):
+                if starts[q + 1] > starts[q]:
+                    shape = col.shape
+                    t = first_wall_hit(shape.verts, shape.normals, shape.first, shape.reach, _start(body), _end(body),
+                                       walls.verts, walls.normals, walls.first, found[starts[q]:starts[q + 1]],
+                                       TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP)
+                    if t < 1.0:
+                        first[ent] = t
         # No pair can need sweeping while no body steps half the linear slop.
         if len(bodies) > 1 and longest >= 0.5 * LINEAR_SLOP:
             self._body_hits(bodies, first)
@@ -56,18 +65,6 @@ class CCDProcessor(esper.Processor):
             else:
                 body.spin = 0.0  # a stalled windmill: still, for the solve too; it owes nothing
             self.stats.toi_hits += 1
-
-    def _first_wall_hit(self, body: Body, col: Collider) -> float:
-        s = body.scratch
-        r = col.radius + TOI_TARGET
-        box = (min(s.x0, body.x) - r, min(s.y0, body.y) - r, max(s.x0, body.x) + r, max(s.y0, body.y) + r)
-        found = self.statics.grid.query(box)
-        if not len(found):
-            return 1.0
-        walls, shape = self.statics.pieces, col.shape
-        return first_wall_hit(shape.verts, shape.normals, shape.first, shape.reach, _start(body), _end(body),
-                              walls.verts, walls.normals, walls.first, found, TOI_TARGET, 0.25 * LINEAR_SLOP,
-                              LINEAR_SLOP)
 
     def _pinched(self, body: Body, col: Collider, arm: Body, arm_col: Collider, t: float) -> bool:
         """Whether the arm, meeting the body at fraction `t` of the substep, drives it into a wall it

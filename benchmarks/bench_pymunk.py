@@ -31,6 +31,7 @@ from bench_physics import pentagons_in_a_box  # noqa: E402
 from polygolf.engine.golf.scenes import find_hole  # noqa: E402
 from polygolf.engine.golf.shots import Shot, simulate_shots  # noqa: E402
 from polygolf.engine.loading.scene import Scene, ShapeSpec, build_scene  # noqa: E402
+from polygolf.engine.physics.jit import compile_kernels  # noqa: E402
 from polygolf.engine.physics.polygon import convex_pieces  # noqa: E402
 from polygolf.engine.physics.presets import PRESETS  # noqa: E402
 from polygolf.engine.physics.settings import FRAME_DT, SHOT_POWER  # noqa: E402
@@ -121,6 +122,7 @@ def main() -> None:
     parser.add_argument("--shots", type=int, default=1000, help="shots at once (default 1000)")
     args = parser.parse_args()
     knobs = PRESETS[args.preset]
+    print(f"kernels compiled or loaded in {compile_kernels():.1f} s (not timed below)")
     print(f"pymunk {pymunk.version} (Chipmunk2D {pymunk.chipmunk_version}); PolyGolf preset {args.preset}: "
           f"{knobs.substeps} substeps x {knobs.iterations} iterations; median of {args.repeats} repeats")
 

@@ -24,6 +24,7 @@ class ConvexSet:
     normals: np.ndarray  # (n, 2) float64
     first: np.ndarray  # (pieces + 1,) int64
     reach: np.ndarray  # (pieces,) float64
+    every_piece: np.ndarray  # (pieces,) int64: 0, 1, ... (the list "all of them" kernels take)
 
     @classmethod
     def of(cls, pieces: Sequence[Sequence[Vec]], normals: Sequence[Sequence[Vec]]) -> ConvexSet:
@@ -33,7 +34,7 @@ class ConvexSet:
         verts = np.array([v for p in pieces for v in p], dtype=np.float64).reshape(-1, 2)
         norms = np.array([n for ns in normals for n in ns], dtype=np.float64).reshape(-1, 2)
         reach = np.array([max(math.hypot(x, y) for x, y in p) for p in pieces], dtype=np.float64)
-        return cls(verts, norms, first, reach)
+        return cls(verts, norms, first, reach, np.arange(len(pieces), dtype=np.int64))
 
     def __len__(self) -> int:
         return len(self.first) - 1

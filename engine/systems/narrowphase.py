@@ -46,9 +46,7 @@ class NarrowphaseProcessor(esper.Processor):
                 continue
             rows = _body_rows(col_a, a, col_b, b)
             if rows:
-                raw = contact_points(rows, a, b, combine(col_a.material, col_b.material), ngs,
-                                     lambda row: (int(row[PIECE_B]), int(row[PIECE_A]), int(row[FEATURE])))
-                pairs.append((ea, eb, a, b, raw))
+                pairs.append((ea, eb, a, b, rows))
                 near.append((col_a, col_b, min(row[SEP] for row in rows)))
         # A body with something else near (a wall or another body) may be halted by it in the solve.
         busy = Counter(e for ea, eb, *_ in pairs for e in (ea, eb))
@@ -104,9 +102,11 @@ class NarrowphaseProcessor(esper.Processor):
                     raw.append((row[NX], row[NY], make_point(row, key, body, static, materials[wall_ent], ngs)))
                 deepest = max(deepest, add_manifolds(manifolds, raw, ent, -1, body, static, carried))
 
-        for (ea, eb, a, b, raw), gap in zip(pairs, gapped):
+        for (ea, eb, a, b, rows), gap, (col_a, col_b, _) in zip(pairs, gapped, near):
             if gap:
                 continue  # as for walls: two bodies that will not meet this substep do not touch
+            raw = contact_points(rows, a, b, combine(col_a.material, col_b.material), ngs,
+                                 lambda row: (int(row[PIECE_B]), int(row[PIECE_A]), int(row[FEATURE])))
             if a.asleep or b.asleep:
                 a.wake()
                 b.wake()
@@ -135,6 +135,6 @@ def _body_rows(col_a: Collider, a: Body, col_b: Collider, b: Body) -> list[list[
     va, na = col_a.posed(a.x, a.y, a.angle)
     vb, nb = col_b.posed(b.x, b.y, b.angle)
     out = np.empty((2 * len(col_a.shape) * len(col_b.shape), ROW))
-    count = collide_sets(va, na, col_a.shape.first, vb, nb, col_b.shape.first, np.arange(len(col_b.shape)),
+    count = collide_sets(va, na, col_a.shape.first, vb, nb, col_b.shape.first, col_b.shape.every_piece,
                          NO_SEAMS, NO_SEAMS, False, CONTACT_MARGIN, False, out)
     return out[:count].tolist()

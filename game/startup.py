@@ -6,9 +6,11 @@ the first call of each, keeps that wait out of a measured run (`simulate`'s `wal
 window's first frames, and out of worker processes (they load what this process compiled and cached).
 
 One place for it: a command that steps physics headless calls `prepare_physics`, which says what is
-happening on one updating stderr line, and only when it takes long enough to notice (stdout stays
-clean: some commands print JSON). The window runs the same steps (`kernel_steps`) on its loading
-screen (`views/loading.py`).
+happening on one updating stderr line (stdout stays clean: some commands print JSON), only when numba
+really compiles and it has taken long enough to notice. Elapsed time alone cannot tell: a load from
+the cache on a busy machine can take as long as compiling a small group, and the line says
+"Compiling". numba's "numba:compile" event fires for a compile, never for a load from the cache. The
+window runs the same steps (`kernel_steps`) on its loading screen (`views/loading.py`).
 """
 
 from __future__ import annotations
@@ -17,10 +19,11 @@ import math
 import sys
 import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from typing import TextIO
 
-QUIET_FOR = 0.3  # s: loading every kernel from the cache takes about 0.2 s; a line only past this
+QUIET_FOR = 0.3  # s of compiling before the line shows: a moment's wait needs no explanation
 SECONDS_PER_STEP = 3.0  # a rough first-launch compile of one warm-up group on 2 cores (3 groups: 8.7 s)
 LEAD = "Compiling the physics engine (first launch only)"
 
@@ -33,9 +36,10 @@ def first_launch_seconds(steps: int) -> int:
 class ConsoleProgress:
     """`compile_kernels`'s progress callback, written as one line to `stream` (stderr).
 
-    Nothing is written until the work has taken `quiet_for` seconds: a timer shows the line even while
-    the first, long step runs, and a cached start finishes before it fires. On a terminal the line is
-    rewritten in place (\\r); elsewhere (a log, a pipe) each step is a line of its own.
+    Nothing is written unless numba compiles (`compiling`, set by `watching_compiles`) and the work
+    has taken `quiet_for` seconds; a timer shows the line while a long step runs, not only between
+    steps. On a terminal the line is rewritten in place (\\r); elsewhere (a log, a pipe) each step
+    is a line of its own.
     """
 
     def __init__(self, stream: TextIO | None = None, quiet_for: float = QUIET_FOR,
@@ -44,6 +48,7 @@ class ConsoleProgress:
         self.quiet_for = quiet_for
         self.clock = clock
         self.tty = bool(getattr(self.stream, "isatty", lambda: False)())
+        self.compiling = False  # numba has compiled something (not only loaded its cache)
         self.shown = False  # a line has been written
         self.finished = False
         self.started: float | None = None
@@ -56,14 +61,12 @@ class ConsoleProgress:
         with self._lock:
             if self.started is None:
                 self.started = self.clock()
-                self._timer = threading.Timer(self.quiet_for, self._wake)
-                self._timer.daemon = True
-                self._timer.start()
+                self._arm(self.quiet_for)
             if done >= total:
                 self._finish()
                 return
             self._text = f"{LEAD}: {done + 1}/{total} {label}..."
-            if self.shown or self.clock() - self.started > self.quiet_for:
+            if self.shown or self._due():
                 self._write(self._text)
 
     def close(self) -> None:
@@ -75,10 +78,23 @@ class ConsoleProgress:
                 self.stream.flush()
             self.finished = True
 
+    def _due(self) -> bool:
+        assert self.started is not None
+        return self.compiling and self.clock() - self.started > self.quiet_for
+
+    def _arm(self, seconds: float) -> None:
+        self._timer = threading.Timer(seconds, self._wake)
+        self._timer.daemon = True
+        self._timer.start()
+
     def _wake(self) -> None:
         with self._lock:
-            if not self.finished and not self.shown and self._text:
+            if self.finished or self.shown:
+                return
+            if self._text and self._due():
                 self._write(self._text)
+            else:
+                self._arm(0.1)  # a compile may start later (a cache missing some kernels)
 
     def _write(self, text: str) -> None:
         self.shown = True
@@ -105,13 +121,35 @@ class ConsoleProgress:
             self._timer = None
 
 
+@contextmanager
+def watching_compiles(progress: ConsoleProgress) -> Iterator[None]:
+    """Set `progress.compiling` when numba starts a compile (its "numba:compile" event fires for a
+    compile, never for a load from the cache). Without numba nothing compiles."""
+    try:
+        from numba.core import event
+    except ImportError:
+        yield
+        return
+
+    class Listener(event.Listener):
+        def on_start(self, _event: event.Event) -> None:
+            progress.compiling = True
+
+        def on_end(self, _event: event.Event) -> None:
+            pass
+
+    with event.install_listener("numba:compile", Listener()):
+        yield
+
+
 def prepare_physics(stream: TextIO | None = None) -> float:
     """Compile (first launch) or load (from the cache) every physics kernel before a command steps
-    physics, with a console line if it takes a while. Returns the seconds it took."""
+    physics, with a console line while numba compiles. Returns the seconds it took."""
     from polygolf.engine.physics.jit import compile_kernels
 
     progress = ConsoleProgress(stream)
     try:
-        return compile_kernels(progress)
+        with watching_compiles(progress):
+            return compile_kernels(progress)
     finally:
         progress.close()

@@ -182,8 +182,15 @@ def window():
 
 def test_loading_screen_draws_between_slow_steps_then_moves_on(window, tmp_path):
     events: list[str] = []
-    slow = [(label, lambda label=label: (time.sleep(FRAME_BUDGET * 1.5), events.append(label))) for label in "abc"]
-    view = LoadingView(Game.load(), then=lambda: events.append("then"), steps=slow)
+    console = ConsoleProgress(Terminal(), quiet_for=0.0)
+
+    def compile_step(label: str) -> None:
+        console.compiling = True  # as numba's compile event does
+        time.sleep(FRAME_BUDGET * 1.5)
+        events.append(label)
+
+    slow = [(label, lambda label=label: compile_step(label)) for label in "abc"]
+    view = LoadingView(Game.load(), then=lambda: events.append("then"), steps=slow, console=console)
     window.show_view(view)
     view.on_update(1 / 60)
     assert events == []  # nothing runs before the screen has been drawn once
@@ -195,6 +202,8 @@ def test_loading_screen_draws_between_slow_steps_then_moves_on(window, tmp_path)
         view.on_update(1 / 60)
     assert events[:8] == ["draw 0.00", "a", "draw 0.33", "b", "draw 0.67", "c", "then", "draw 1.00"]
     assert events.count("then") == 1
+    # From a terminal the same compile is the command line's line too, ended when the screen moves on.
+    assert console.stream.getvalue().endswith(" s\n") and f"{LEAD}: 3/3 c..." in console.stream.getvalue()
     shots = Path(os.environ.get("POLYGOLF_SCREENSHOTS", tmp_path))
     shots.mkdir(parents=True, exist_ok=True)
     pictures[1].save(shots / "loading.png")
@@ -212,6 +221,7 @@ def test_a_cached_start_passes_through_to_the_menu(window):
     flow = ScreenFlow(window, game)
     flow.loading(then=flow.menu)
     assert isinstance(window.current_view, LoadingView)
+    window.current_view.console.stream = console = Terminal()  # nothing compiles: not a word on stderr
     frames = 0
     while isinstance(window.current_view, LoadingView) and frames < 10:
         window.current_view.on_draw()
@@ -219,6 +229,7 @@ def test_a_cached_start_passes_through_to_the_menu(window):
         frames += 1
     assert isinstance(window.current_view, MenuView)
     assert frames <= 2  # a frame or two: every step is already loaded
+    assert console.getvalue() == ""
 
 
 # --- the kernels interpreted -----------------------------------------------------------------------

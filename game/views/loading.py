@@ -5,7 +5,8 @@ A first launch compiles them (seconds, `game.startup`); later launches load them
 in a fraction of a second and this screen is gone after a frame or two. The warm-up steps run in
 `on_update`, as many as fit in FRAME_BUDGET but at least one, and only after a frame has been drawn
 since the last: the window shows the bar and the step being compiled between two long steps (it does
-not answer while one runs; none takes more than a few seconds).
+not answer while one runs; none takes more than a few seconds). Started from a terminal, the same
+compile also shows as the command line's one stderr line (`startup.ConsoleProgress`).
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from collections.abc import Callable, Sequence
 import arcade
 
 from polygolf.game.session import Game
-from polygolf.game.startup import first_launch_seconds
+from polygolf.game.startup import ConsoleProgress, first_launch_seconds, watching_compiles
 from polygolf.game.views.navigation import window_key
 from polygolf.game.views.widgets import title
 
@@ -27,7 +28,8 @@ Step = tuple[str, Callable[[], None]]
 
 
 class LoadingView(arcade.View):
-    def __init__(self, game: Game, then: Callable[[], None], steps: Sequence[Step] | None = None) -> None:
+    def __init__(self, game: Game, then: Callable[[], None], steps: Sequence[Step] | None = None,
+                 console: ConsoleProgress | None = None) -> None:
         super().__init__()
         if steps is None:
             from polygolf.engine.physics.jit import kernel_steps
@@ -36,6 +38,7 @@ class LoadingView(arcade.View):
         self.game = game
         self.then = then
         self.steps = list(steps)
+        self.console = console if console is not None else ConsoleProgress()
         self.done = 0  # steps run
         self.drawn = False  # a frame drawn since the last steps ran
         self.finished = False
@@ -59,16 +62,24 @@ class LoadingView(arcade.View):
     def on_update(self, delta_time: float) -> None:
         if self.finished or not self.drawn:
             return  # the screen is drawn before the first step, which may take seconds
-        began = time.perf_counter()
-        while self.done < len(self.steps):
-            _label, warm = self.steps[self.done]
-            warm()
-            self.done += 1
-            if time.perf_counter() - began > FRAME_BUDGET:
-                break
+        began, total = time.perf_counter(), len(self.steps)
+        try:
+            with watching_compiles(self.console):
+                while self.done < total:
+                    label, warm = self.steps[self.done]
+                    self.console(self.done, total, label)
+                    warm()
+                    self.done += 1
+                    if time.perf_counter() - began > FRAME_BUDGET:
+                        break
+        except BaseException:
+            self.console.close()
+            raise
         self.drawn = False
-        if self.done == len(self.steps):
+        if self.done == total:
             self.finished = True
+            self.console(total, total, "ready")
+            self.console.close()
             self.then()
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:

@@ -53,7 +53,8 @@ def run_menu() -> None:
     from polygolf.game.session import Game
 
     game = Game.load()
-    ScreenFlow(make_window(), game).menu()
+    flow = ScreenFlow(make_window(), game)
+    flow.loading(then=flow.menu)
     arcade_run(game)
 
 
@@ -95,7 +96,9 @@ def build_nine_here(seed: int):
     import time
 
     from polygolf.engine.golf.nine import NINE, build_nine
+    from polygolf.game.startup import prepare_physics
 
+    prepare_physics()  # here, not in each worker process: they load what it compiled
     started = time.perf_counter()
 
     def progress(k: int, total: int) -> None:
@@ -116,7 +119,8 @@ def run_play(course: str, hole: int, theme: str | None, shape: str | None, prese
     game = _game_for(course, hole, theme, shape, players=players, seed=seed)
     game.preset = preset
     game.guide_seen = True
-    ScreenFlow(make_window(), game).new_round(hole - 1)
+    flow = ScreenFlow(make_window(), game)
+    flow.loading(then=lambda: flow.new_round(hole - 1))
     arcade_run(game)
 
 
@@ -131,7 +135,7 @@ def run_hole_file(path: Path, theme: str | None, shape, preset: str, watch: bool
     game.guide_seen = True
     game.record_rounds = False  # a hole being written: practice, nothing saved
     flow = ScreenFlow(make_window(), game)
-    flow.new_round()
+    flow.loading(then=flow.new_round)
     if watch:
         import arcade
 
@@ -159,7 +163,8 @@ def run_replay(path: Path) -> None:
     game.courses, game.course_index = [course], 0
     session = replay_session(record, course)
     game.round, game.session = session.round, session
-    ScreenFlow(make_window(), game).watch_round(record, session)
+    flow = ScreenFlow(make_window(), game)
+    flow.loading(then=lambda: flow.watch_round(record, session))
     arcade_run(game)
 
 

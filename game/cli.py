@@ -2,6 +2,11 @@
 
 Window commands import arcade only when they run, so `simulate`, `validate` and `explain` work on a
 machine with no display at all.
+
+A command that steps physics headless readies the compiled kernels first (`startup.prepare_physics`:
+one stderr line while a first launch compiles them), after its arguments and content are checked, so
+a mistake is reported at once and the compile is never timed as stepping. Window commands do it on
+their loading screen; `schema`, `explain`, `scores` and `validate` without `--prove` never do it.
 """
 
 from __future__ import annotations
@@ -22,6 +27,7 @@ from polygolf.engine.loading.limits import MAX_SECONDS
 from polygolf.engine.loading.paths import content_roots
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.engine.physics.presets import PRESETS
+from polygolf.game import startup
 
 EXIT_CONTENT = 2
 PROGRESS_AFTER = 2.0  # s of wall time before `simulate` shows its progress on a terminal
@@ -143,6 +149,7 @@ def _simulate(args: argparse.Namespace) -> int:
 
     frames = round(args.seconds * 60)
     with build_scene_file(args.scene, args.preset) as sim:
+        startup.prepare_physics()
         started = time.perf_counter()
         shown = False
         for done in range(0, frames, 60):
@@ -193,6 +200,8 @@ def _prove_warnings(paths, broken: set[str]) -> list[str]:
     from polygolf.game.tools.validate import _kind, content_files
 
     files = [f for f in content_files(paths) if _kind(f) == "hole" and str(f) not in broken]
+    if files:
+        startup.prepare_physics()
     proofs = prove_all([load_hole_file(f) for f in files])
     out = []
     for path, proof in zip(files, proofs):
@@ -209,6 +218,8 @@ def _par(args: argparse.Namespace) -> int:
     for problem in broken:
         print(f"polygolf: skipped: {problem}", file=sys.stderr)
     tty = sys.stderr.isatty() and not args.json
+    if holes:
+        startup.prepare_physics()
 
     def done(proof) -> None:
         if tty:
@@ -273,6 +284,7 @@ def _generate(args: argparse.Namespace) -> int:
         print(f"polygolf: --out: cannot make the folder {out.parent}: {exc.strerror}", file=sys.stderr)
         return EXIT_CONTENT
     library = library_beside(out)  # the library `validate` and `play` will read it with
+    startup.prepare_physics()
     print(f"polygolf: generating hole {args.hole} of seed {args.seed}, proving it at {args.preset}...",
           file=sys.stderr)
     try:
@@ -323,6 +335,7 @@ def _autoplay(args: argparse.Namespace) -> int:
     if args.shape is not None:
         game.shape_label, game.shape = args.shape
     game.preset = args.preset
+    startup.prepare_physics()
     game.start_round()
     session = game.session
     rng = random.Random(0)  # the same round every time for the same arguments
@@ -379,6 +392,7 @@ def _replay(args: argparse.Namespace) -> int:
         from polygolf.game.app import run_replay
 
         return _window(run_replay, args.file)
+    startup.prepare_physics()
     lines = verify(record, course)
     for line, _ in lines:
         print(line)
@@ -414,6 +428,7 @@ def _bench_accuracy(args: argparse.Namespace) -> int:
     from polygolf.game.tools import accuracy
 
     cases = accuracy.all_cases(args.quick)
+    startup.prepare_physics()
     if args.quick:
         settings = accuracy.sweep_settings(substeps=(1, 4, 16), iterations=(1, 8, 20))
     else:

@@ -1,5 +1,6 @@
 """The screen flow: the one place that decides which screen follows which.
 
+    loading (the physics compiled or loaded) ─▶ menu, or the screen a command line asked for
     menu ─▶ (build Random nine, first time for a seed) ─▶ (guide, first time) ─▶ play ⇄ pause
     menu ⇄ names, guide
               play ─▶ between ─▶ play … ─▶ results ─▶ play again | menu
@@ -13,6 +14,8 @@ Screens get this object and ask it to move on (`views.navigation.Navigator`); no
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import arcade
 
 from polygolf.engine.golf.holes import Course
@@ -22,6 +25,7 @@ from polygolf.game.session import Game, HoleResult, Round, RoundPlay
 from polygolf.game.views.between import BetweenView
 from polygolf.game.views.build import BuildView
 from polygolf.game.views.guide import GuideView
+from polygolf.game.views.loading import LoadingView
 from polygolf.game.views.menu import MenuView
 from polygolf.game.views.names import NamesView
 from polygolf.game.views.pause import PauseView
@@ -44,6 +48,11 @@ class ScreenFlow:
         if self.playing is not None:
             self.playing.close()
             self.playing = None
+
+    def loading(self, then: Callable[[], None]) -> None:
+        """The first screen of a window: the physics kernels compiled (first launch) or loaded, then
+        `then` (the menu, or a hole straight away)."""
+        self._show(LoadingView(self.game, then))
 
     def menu(self) -> None:
         self._leave_hole()

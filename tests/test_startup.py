@@ -1,0 +1,256 @@
+"""Startup: the console line while a first launch compiles the physics kernels (and none when they load
+from the cache), the window's loading screen, and the kernels run interpreted (NUMBA_DISABLE_JIT=1)
+over a chosen part of the physics tests, so both paths stay covered."""
+
+from __future__ import annotations
+
+import io
+import json
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import arcade
+import pytest
+
+from polygolf.engine.loading.paths import SCENES_DIR
+from polygolf.engine.physics import jit
+from polygolf.game import startup
+from polygolf.game.cli import main
+from polygolf.game.flow import ScreenFlow
+from polygolf.game.session import Game
+from polygolf.game.startup import LEAD, ConsoleProgress
+from polygolf.game.views.loading import FRAME_BUDGET, LoadingView
+from polygolf.game.views.menu import MenuView
+
+ROOT = Path(__file__).resolve().parent.parent
+SCENE = SCENES_DIR / "flat-wall.yaml"
+# The physics tests run again interpreted: the kernels of collide.py, toi.py, geometry.py and grid.py
+# line by line, directly (test_collide, test_grid) and through the pipeline (hard cases, systems,
+# random shapes in a box, parallel shots on holes); about 10 s interpreted on 2 cores.
+INTERPRETED = ["tests/test_collide.py", "tests/test_hard_cases.py", "tests/test_systems.py", "tests/test_grid.py",
+               "tests/test_property.py", "tests/test_shots.py"]
+
+
+class Terminal(io.StringIO):
+    def isatty(self) -> bool:
+        return True
+
+
+def wait_for(condition, seconds: float = 5.0) -> None:
+    end = time.monotonic() + seconds
+    while not condition() and time.monotonic() < end:
+        time.sleep(0.01)
+
+
+# --- the console line ------------------------------------------------------------------------------
+
+def test_a_quick_start_writes_nothing():
+    out = Terminal()
+    progress = ConsoleProgress(out, quiet_for=5.0)
+    progress.compiling = True
+    for done, label in enumerate(["shapes", "contacts", "continuous collision"]):
+        progress(done, 3, label)
+    progress(3, 3, "ready")
+    progress.close()
+    time.sleep(0.05)
+    assert out.getvalue() == ""
+
+
+def test_a_slow_load_from_the_cache_writes_nothing():
+    """Not compiling: however long the load takes (a busy machine), the line would be untrue."""
+    out = Terminal()
+    progress = ConsoleProgress(out, quiet_for=0.02)
+    progress(0, 2, "shapes")
+    time.sleep(0.2)  # the timer has looked more than once
+    progress(1, 2, "contacts")
+    progress(2, 2, "ready")
+    progress.close()
+    assert out.getvalue() == ""
+
+
+def test_a_slow_first_step_shows_the_line_while_it_runs_then_updates_it_in_place():
+    out = Terminal()
+    progress = ConsoleProgress(out, quiet_for=0.05)
+    progress(0, 3, "shapes")
+    progress.compiling = True  # as numba's compile event does, inside the step
+    wait_for(lambda: progress.shown)  # the timer writes it while "shapes" is still compiling
+    assert out.getvalue() == f"\r{LEAD}: 1/3 shapes..."
+    progress(1, 3, "contacts")
+    progress(2, 3, "grid")  # shorter than the line before: blanked to its end
+    progress(3, 3, "ready")
+    progress.close()
+    text = out.getvalue()
+    assert text.count("\n") == 1 and text.endswith("\n")
+    frames = text.split("\r")[1:]
+    longest = len(f"{LEAD}: 2/3 contacts...")
+    assert frames[:3] == [f"{LEAD}: 1/3 shapes...", f"{LEAD}: 2/3 contacts...", f"{LEAD}: 3/3 grid...".ljust(longest)]
+    assert frames[3].startswith(f"{LEAD}: done in ") and frames[3].rstrip().endswith(" s")
+
+
+def test_off_a_terminal_each_step_is_a_plain_line():
+    now = [0.0]
+    out = io.StringIO()
+    progress = ConsoleProgress(out, quiet_for=0.5, clock=lambda: now[0])
+    progress.compiling = True
+    progress(0, 2, "shapes")  # at once: nothing yet
+    now[0] = 1.0
+    progress(1, 2, "contacts")
+    now[0] = 3.0
+    progress(2, 2, "ready")
+    progress.close()
+    assert out.getvalue() == f"{LEAD}: 2/2 contacts...\n{LEAD}: done in 3.0 s\n"
+
+
+def test_a_step_that_fails_leaves_no_line_open():
+    out = Terminal()
+    progress = ConsoleProgress(out, quiet_for=-1.0)
+    progress.compiling = True
+    progress(0, 2, "shapes")
+    progress.close()  # as prepare_physics does when a warm-up raises
+    assert out.getvalue() == f"\r{LEAD}: 1/2 shapes...\n"
+
+
+def test_numba_compiling_is_noticed_and_a_compiled_call_is_not():
+    numba = pytest.importorskip("numba")
+    if not jit.COMPILED:
+        pytest.skip("numba is disabled: nothing compiles")
+    add = numba.njit(lambda x: x + 1)  # not cached: compiled here
+    progress = ConsoleProgress(io.StringIO())
+    with startup.watching_compiles(progress):
+        add(1)
+    assert progress.compiling
+    progress = ConsoleProgress(io.StringIO())
+    with startup.watching_compiles(progress):
+        add(2)  # the same types: already compiled
+    assert not progress.compiling
+
+
+def test_commands_compile_only_when_they_step_physics(monkeypatch, capsys, tmp_path):
+    calls = []
+
+    def compile_kernels(progress=None) -> float:
+        calls.append(progress)
+        return 0.0
+
+    monkeypatch.setattr(jit, "compile_kernels", compile_kernels)
+    for argv in (["schema"], ["validate", str(SCENE)], ["explain", str(SCENE)], ["scores"],
+                 ["schema", "--out", str(tmp_path)]):
+        assert main(argv) == 0, argv
+    assert calls == []
+    capsys.readouterr()
+    assert main(["simulate", str(SCENE), "--seconds", "0.1", "--json"]) == 0
+    assert len(calls) == 1 and isinstance(calls[0], ConsoleProgress)
+    json.loads(capsys.readouterr().out)  # stdout is the report alone
+
+
+def test_first_launch_compiles_with_one_line_on_stderr_and_the_next_loads_silently(tmp_path):
+    """A cold numba cache (its own folder) in a new process: stderr says what is compiling and how
+    long it took, stdout gets nothing; the second launch loads the cache without a word. Only the
+    first two warm-up groups, to keep the test short (all of them take 10-20 s cold: see
+    benchmarks/bench_start.py)."""
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "numba"))
+    env.pop("NUMBA_DISABLE_JIT", None)
+    code = ("from polygolf.engine.physics import jit\n"
+            "from polygolf.game.startup import prepare_physics\n"
+            "steps = jit.kernel_steps()[:2]\n"
+            "jit.kernel_steps = lambda: steps\n"
+            "prepare_physics()\n")
+    first = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=180)
+    assert first.returncode == 0 and first.stdout == "", first.stderr
+    lines = first.stderr.splitlines()
+    assert lines and all(line.startswith(LEAD + ": ") for line in lines), first.stderr
+    assert lines[-1].startswith(f"{LEAD}: done in ") and lines[-1].endswith(" s")
+    assert any(line.endswith("...") and "/2 " in line for line in lines[:-1])  # a "k/2 label..." step
+    again = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=120)
+    assert again.returncode == 0 and again.stdout == "" and again.stderr == "", again.stderr
+
+
+def test_prepare_physics_runs_every_warm_up(monkeypatch):
+    ran = []
+    steps = [(label, lambda label=label: ran.append(label)) for label in ("a", "b")]
+    monkeypatch.setattr(jit, "kernel_steps", lambda: steps)
+    assert startup.prepare_physics(io.StringIO()) >= 0.0
+    assert ran == ["a", "b"]
+
+
+# --- the loading screen ----------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def window():
+    assert os.environ.get("DISPLAY"), "window tests need a display: run under Xvfb (pytest-xvfb does it)"
+    win = arcade.Window(1280, 720, "PolyGolf test", resizable=True)
+    yield win
+    win.close()
+
+
+def test_loading_screen_draws_between_slow_steps_then_moves_on(window, tmp_path):
+    events: list[str] = []
+    console = ConsoleProgress(Terminal(), quiet_for=0.0)
+
+    def compile_step(label: str) -> None:
+        console.compiling = True  # as numba's compile event does
+        time.sleep(FRAME_BUDGET * 1.5)
+        events.append(label)
+
+    slow = [(label, lambda label=label: compile_step(label)) for label in "abc"]
+    view = LoadingView(Game.load(), then=lambda: events.append("then"), steps=slow, console=console)
+    window.show_view(view)
+    view.on_update(1 / 60)
+    assert events == []  # nothing runs before the screen has been drawn once
+    pictures = []
+    for _ in range(5):
+        view.on_draw()
+        events.append(f"draw {view.fraction:.2f}")
+        pictures.append(arcade.get_image(0, 0, *window.get_framebuffer_size()).convert("RGB"))
+        view.on_update(1 / 60)
+    assert events[:8] == ["draw 0.00", "a", "draw 0.33", "b", "draw 0.67", "c", "then", "draw 1.00"]
+    assert events.count("then") == 1
+    # From a terminal the same compile is the command line's line too, ended when the screen moves on.
+    assert console.stream.getvalue().endswith(" s\n") and f"{LEAD}: 3/3 c..." in console.stream.getvalue()
+    shots = Path(os.environ.get("POLYGOLF_SCREENSHOTS", tmp_path))
+    shots.mkdir(parents=True, exist_ok=True)
+    pictures[1].save(shots / "loading.png")
+    # The bar runs from x = 360 to 920 (560 px, centred); its middle row is 62 - 11 px below the
+    # window's middle. A third done: the button colour from its left edge to a third of the way.
+    button = view.game.theme.rgba("button")[:3]
+    row = pictures[1].crop((0, 360 + 51, 1280, 360 + 52)).getdata()
+    filled = [x for x, pixel in enumerate(row) if pixel == button]
+    assert filled and abs(min(filled) - 360) <= 3 and abs(max(filled) - (360 + 560 / 3)) <= 3
+
+
+def test_a_cached_start_passes_through_to_the_menu(window):
+    jit.compile_kernels()  # loaded (or compiled, on a machine's first run) before the screen opens
+    game = Game.load()
+    flow = ScreenFlow(window, game)
+    flow.loading(then=flow.menu)
+    assert isinstance(window.current_view, LoadingView)
+    window.current_view.console.stream = console = Terminal()  # nothing compiles: not a word on stderr
+    frames = 0
+    while isinstance(window.current_view, LoadingView) and frames < 10:
+        window.current_view.on_draw()
+        window.current_view.on_update(1 / 60)
+        frames += 1
+    assert isinstance(window.current_view, MenuView)
+    assert frames <= 2  # a frame or two: every step is already loaded
+    assert console.getvalue() == ""
+
+
+# --- the kernels interpreted -----------------------------------------------------------------------
+
+def test_physics_tests_pass_with_the_kernels_interpreted():
+    """NUMBA_DISABLE_JIT=1 runs every kernel as plain Python: the same code must give the same
+    results (a kernel that only works compiled, or only interpreted, fails here or in the suite)."""
+    env = dict(os.environ, NUMBA_DISABLE_JIT="1")
+    code = ("import sys, pytest\n"
+            "from polygolf.engine.physics import jit\n"
+            "assert not jit.COMPILED, 'NUMBA_DISABLE_JIT=1 should leave the kernels interpreted'\n"
+            f"sys.exit(pytest.main(['-p', 'no:cacheprovider', '--no-xvfb', *{INTERPRETED!r}]))\n")
+    started = time.perf_counter()
+    result = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, env=env,
+                            timeout=300)
+    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-2000:]
+    assert " passed" in result.stdout and "skipped" not in result.stdout
+    assert time.perf_counter() - started < 120, "the interpreted subset should stay well under a minute"

@@ -49,6 +49,8 @@ POINT_COLUMNS = 21
 # Position correction, as `solve_contacts` takes it.
 SPLIT, NGS, NO_CORRECTION = 0, 1, 2
 _CORRECTIONS = {"split": SPLIT, "ngs": NGS, "none": NO_CORRECTION}
+# What `solve` writes back to a body: pose, velocity, pseudo-velocity.
+_BODY_OUT = [B_X, B_Y, B_ANGLE, B_VX, B_VY, B_SPIN, B_PUSH_X, B_PUSH_Y, B_PUSH_SPIN]
 
 
 # --- small pieces --------------------------------------------------------------------------------
@@ -590,55 +592,79 @@ def solve(manifolds: list[Manifold], knobs: Knobs, dt: float, friction: bool) ->
     Returns how many islands threw their warm start away for a cold solve."""
     if not manifolds:
         return 0
-    ngs = knobs.position_correction == "ngs"
     index: dict[int, int] = {}
     bodies: list[Body] = []
-    pair: list[tuple[int, int]] = []
+    body_a: list[int] = []
+    body_b: list[int] = []
+    manifold_rows: list[tuple[float, ...]] = []
     first = [0]
     points: list[ContactPoint] = []
     for m in manifolds:
-        rows = []
-        for body in (m.body_a, m.body_b):
-            row = index.get(id(body))
-            if row is None:
-                row = index[id(body)] = len(bodies)
-                bodies.append(body)
-            rows.append(row)
-        pair.append((rows[0], rows[1]))
+        body = m.body_a
+        row = index.get(id(body))
+        if row is None:
+            row = index[id(body)] = len(bodies)
+            bodies.append(body)
+        body_a.append(row)
+        body = m.body_b
+        row = index.get(id(body))
+        if row is None:
+            row = index[id(body)] = len(bodies)
+            bodies.append(body)
+        body_b.append(row)
+        manifold_rows.append((m.nx, m.ny, 0.0, 0.0, 0.0))
         points += m.points
         first.append(len(points))
 
     body_rows = np.array([(b.x, b.y, b.angle, b.vx, b.vy, b.spin, b.mass, b.inertia, b.inv_mass, b.inv_inertia,
                            b.scratch.push_x, b.scratch.push_y, b.scratch.push_spin) for b in bodies], dtype=np.float64)
-    normals = np.zeros((len(manifolds), MANIFOLD_COLUMNS))
-    normals[:, :2] = [(m.nx, m.ny) for m in manifolds]
-    point_rows = np.zeros((len(points), POINT_COLUMNS))
+    normals = np.array(manifold_rows, dtype=np.float64)
+    pair = np.array((body_a, body_b), dtype=np.int64).T.copy()
+    offsets = np.array(first, dtype=np.int64)
+    point_rows = np.empty((len(points), POINT_COLUMNS))
     if points:
         point_rows[:, :P_RA_X] = [(p.x, p.y, p.separation, p.friction, p.normal_impulse, p.tangent_impulse,
                                    p.push_impulse) for p in points]
-        if ngs:
+        if knobs.position_correction == "ngs":
             point_rows[:, P_REF_IS_A:] = [(p.ref_is_a, *p.local_normal, *p.local_face, *p.local_clip) for p in points]
-    block = np.zeros(len(manifolds), dtype=np.bool_)
+    block = np.empty(len(manifolds), dtype=np.bool_)
 
     cold_restarts = solve_contacts(
-        body_rows, normals, np.array(pair, dtype=np.int64), np.array(first, dtype=np.int64), block, point_rows,
-        bool(knobs.warm_start), int(knobs.iterations), int(knobs.position_iterations),
-        _CORRECTIONS[knobs.position_correction], float(dt), bool(friction), POSITION_BETA, LINEAR_SLOP,
-        MAX_CORRECTION, BLOCK_MAX_CONDITION)
+        body_rows, normals, pair, offsets, block, point_rows, bool(knobs.warm_start), int(knobs.iterations),
+        int(knobs.position_iterations), _CORRECTIONS[knobs.position_correction], float(dt), bool(friction),
+        POSITION_BETA, LINEAR_SLOP, MAX_CORRECTION, BLOCK_MAX_CONDITION)
 
-    for body, (x, y, angle, vx, vy, spin, *_, push_x, push_y, push_spin) in zip(bodies, body_rows.tolist()):
-        body.x, body.y, body.angle, body.vx, body.vy, body.spin = x, y, angle, vx, vy, spin
+    for body, (x, y, angle, vx, vy, spin, push_x, push_y, push_spin) in zip(bodies, body_rows[:, _BODY_OUT].tolist()):
+        body.x = x
+        body.y = y
+        body.angle = angle
+        body.vx = vx
+        body.vy = vy
+        body.spin = spin
         s = body.scratch
-        s.push_x, s.push_y, s.push_spin = push_x, push_y, push_spin
+        s.push_x = push_x
+        s.push_y = push_y
+        s.push_spin = push_spin
     for p, (normal, tangent, push, rax, ray, rbx, rby, normal_mass, tangent_mass, approach) in zip(
             points, point_rows[:, P_NORMAL_IMPULSE:P_APPROACH + 1].tolist()):
-        p.normal_impulse, p.tangent_impulse, p.push_impulse = normal, tangent, push
-        p.ra_x, p.ra_y, p.rb_x, p.rb_y = rax, ray, rbx, rby
-        p.normal_mass, p.tangent_mass, p.approach_speed = normal_mass, tangent_mass, approach
-    for m, (*_, k11, k12, k22), is_block in zip(manifolds, normals.tolist(), block.tolist()):
-        if len(m.points) == 2:
-            m.k11, m.k12, m.k22 = k11, k12, k22
+        p.normal_impulse = normal
+        p.tangent_impulse = tangent
+        p.push_impulse = push
+        p.ra_x = rax
+        p.ra_y = ray
+        p.rb_x = rbx
+        p.rb_y = rby
+        p.normal_mass = normal_mass
+        p.tangent_mass = tangent_mass
+        p.approach_speed = approach
+    for m, is_block in zip(manifolds, block.tolist()):
         m.block = is_block
+    two = np.flatnonzero(offsets[1:] - offsets[:-1] == 2)  # prepare fills K for two-point manifolds only
+    for k, (k11, k12, k22) in zip(two.tolist(), normals[two, M_K11:].tolist()):
+        m = manifolds[k]
+        m.k11 = k11
+        m.k12 = k12
+        m.k22 = k22
     return cold_restarts
 
 

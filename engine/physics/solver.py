@@ -535,6 +535,7 @@ def solve_contacts(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, fi
                     n_dynamic += 1
         _prepare(bodies, normals, pair, first, block, points, order, s, e, max_condition)
         if warm:
+            # Kinetic energies added left to right in that order (a plain sum, the same on every Python).
             before = 0.0
             for j in range(n_dynamic):
                 saved[j, 0], saved[j, 1], saved[j, 2] = bodies[dynamic[j], B_VX], bodies[dynamic[j], B_VY], \

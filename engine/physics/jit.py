@@ -54,6 +54,7 @@ KERNEL_MODULES = (
     "polygolf.engine.physics.collide",
     "polygolf.engine.physics.toi",
     "polygolf.engine.physics.grid",
+    "polygolf.engine.physics.solver",
 )
 
 

@@ -1,9 +1,9 @@
 """Sequential impulses on contact manifolds (Catto, GDC 2006; box2d-lite and Box2D v2.4).
 
-Per substep:
-1. `prepare`: lever arms, effective masses, and the approach speed of every point *before* solving.
-2. `warm_start`: re-apply last substep's impulses of persisting points.
-3. `solve_velocities`, repeated: Coulomb friction clamped to the current normal impulse, then the
+Per substep, island by island:
+1. prepare: lever arms, effective masses, and the approach speed of every point *before* solving.
+2. warm start: re-apply last substep's impulses of persisting points.
+3. velocity sweeps, repeated: Coulomb friction clamped to the current normal impulse, then the
    normal constraint vn >= 0 with accumulated-impulse clamping; a two-point manifold is solved as one
    2x2 complementarity problem (the block solver) so a flat face gets two equal impulses.
 4. Position error is removed without touching velocities: split impulses (pseudo-velocities that move
@@ -15,236 +15,94 @@ Per substep:
 `solve` runs steps 1-4 in that order for one substep, as box2d-lite's `Arbiter::PreStep` and
 `ApplyImpulse` do for its world; the restitution phase is its own stage. Normals point from body A to
 body B; a negative normal velocity is approach.
+
+The work is one compiled kernel (`solve_contacts`) over packed arrays: `solve` packs the substep's
+bodies, manifolds and points once, runs it, and writes back what later stages read (the bodies'
+state; each point's impulses, lever arms, masses and approach speed; each manifold's block data).
 """
 
 from __future__ import annotations
 
 import math
 
-from polygolf.engine.physics.contact import Manifold
+import numpy as np
+
+from polygolf.engine.physics.body import Body
+from polygolf.engine.physics.contact import ContactPoint, Manifold
+from polygolf.engine.physics.jit import kernel, warm_up
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import BLOCK_MAX_CONDITION, LINEAR_SLOP, MAX_CORRECTION, POSITION_BETA
 
-
-def islands(manifolds: list[Manifold]) -> list[list[Manifold]]:
-    """The manifolds in groups that share no dynamic body (union-find), each in its original order.
-    Groups do not interact, so each is solved on its own: a decision about one (the cold restart
-    below) never touches another, and a body solves the same alone as beside others it never meets."""
-    parent: dict[int, int] = {}
-
-    def root(key: int) -> int:
-        while parent.setdefault(key, key) != key:
-            parent[key] = parent[parent[key]]
-            key = parent[key]
-        return key
-
-    for m in manifolds:
-        dynamic = [id(b) for b in (m.body_a, m.body_b) if b.inv_mass > 0.0]
-        for other in dynamic[1:]:
-            parent[root(other)] = root(dynamic[0])
-    groups: dict[int, list[Manifold]] = {}
-    for m in manifolds:
-        anchor = next((id(b) for b in (m.body_a, m.body_b) if b.inv_mass > 0.0), id(m))
-        groups.setdefault(root(anchor), []).append(m)
-    return list(groups.values())
+# Columns of a body row: pose, velocity, mass properties, split-impulse pseudo-velocity. A velocity
+# and its pseudo-velocity are three columns each in the same order, so one function serves both.
+B_X, B_Y, B_ANGLE, B_VX, B_VY, B_SPIN, B_MASS, B_INERTIA, B_INV_MASS, B_INV_INERTIA, B_PUSH_X, B_PUSH_Y, \
+    B_PUSH_SPIN = range(13)
+BODY_COLUMNS = 13
+# Columns of a manifold row: its normal and its block matrix (filled for two-point manifolds).
+M_NX, M_NY, M_K11, M_K12, M_K22 = range(5)
+MANIFOLD_COLUMNS = 5
+# Columns of a point row: what the narrowphase made (P_X..P_FRICTION), the solver's state
+# (P_NORMAL_IMPULSE..P_APPROACH, written back to the point) and the local geometry NGS reads.
+P_X, P_Y, P_SEP, P_FRICTION, P_NORMAL_IMPULSE, P_TANGENT_IMPULSE, P_PUSH_IMPULSE, P_RA_X, P_RA_Y, P_RB_X, P_RB_Y, \
+    P_NORMAL_MASS, P_TANGENT_MASS, P_APPROACH, P_REF_IS_A, P_LNX, P_LNY, P_LFX, P_LFY, P_LQX, P_LQY = range(21)
+POINT_COLUMNS = 21
+# Position correction, as `solve_contacts` takes it.
+SPLIT, NGS, NO_CORRECTION = 0, 1, 2
+_CORRECTIONS = {"split": SPLIT, "ngs": NGS, "none": NO_CORRECTION}
+# What `solve` writes back to a body: pose, velocity, pseudo-velocity.
+_BODY_OUT = [B_X, B_Y, B_ANGLE, B_VX, B_VY, B_SPIN, B_PUSH_X, B_PUSH_Y, B_PUSH_SPIN]
 
 
-def solve(manifolds: list[Manifold], knobs: Knobs, dt: float, friction: bool) -> int:
-    """One substep's contact solve, island by island. Returns how many islands threw their warm
-    start away for a cold solve (see `solve_island`)."""
-    groups = islands(manifolds)
-    if len(groups) == 1:
-        return int(solve_island(manifolds, knobs, dt, friction))
-    return sum(solve_island(group, knobs, dt, friction) for group in groups)
+# --- small pieces --------------------------------------------------------------------------------
+
+@kernel
+def _max(a: float, b: float) -> float:
+    """Python's max(a, b): the first unless the second is larger (so max(-0.0, 0.0) is -0.0)."""
+    return b if b > a else a
 
 
-def solve_island(manifolds: list[Manifold], knobs: Knobs, dt: float, friction: bool) -> bool:
-    """Velocities, then position error removed without touching them. Returns True if the warm start
-    was thrown away for a cold solve (see below)."""
-    prepare(manifolds)
-    cold_restart = False
-    if knobs.warm_start:
-        bodies = {id(b): b for m in manifolds for b in (m.body_a, m.body_b) if b.inv_mass > 0.0}.values()
-        saved = [(b, b.vx, b.vy, b.spin) for b in bodies]
-        before = sum(b.kinetic_energy() for b in bodies)
-        warm_start(manifolds)
-        _iterate(manifolds, knobs.iterations, friction)
-        if sum(b.kinetic_energy() for b in bodies) > before * (1.0 + 1e-12):
-            # A contact solve without restitution can only take energy away; a cold Gauss-Seidel
-            # sweep never adds any, but last substep's impulses re-applied to contacts that are
-            # now opening can. Fall back to the cold solve.
-            cold_restart = True
-            for b, vx, vy, spin in saved:
-                b.vx, b.vy, b.spin = vx, vy, spin
-            for m in manifolds:
-                for p in m.points:
-                    p.normal_impulse = p.tangent_impulse = 0.0
-            _iterate(manifolds, knobs.iterations, friction)
-    else:
-        _iterate(manifolds, knobs.iterations, friction)
-
-    chain = shock_chain(manifolds)
-    if chain:
-        propagate_shock(chain)
-    if knobs.position_correction == "split":
-        for _ in range(knobs.position_iterations):
-            solve_split(manifolds, dt, POSITION_BETA, LINEAR_SLOP, MAX_CORRECTION)
-        if chain:
-            propagate_shock(chain, dt, POSITION_BETA, LINEAR_SLOP, MAX_CORRECTION)
-        apply_pushes(manifolds, dt)
-    elif knobs.position_correction == "ngs":
-        for _ in range(knobs.position_iterations):
-            solve_ngs(manifolds, POSITION_BETA, LINEAR_SLOP, MAX_CORRECTION)
-    return cold_restart
+@kernel
+def _min(a: float, b: float) -> float:
+    """Python's min(a, b): the first unless the second is smaller."""
+    return b if b < a else a
 
 
-def shock_chain(manifolds: list[Manifold]) -> list[tuple[Manifold, bool]]:
-    """Touching contacts between bodies at different distances from the ground (a wall or a
-    windmill, at 0), nearest the ground first, each with whether its A is the body nearer the ground.
-    Distance is counted in contacts: 1 = touches the ground. Empty unless some dynamic body
-    touches another and, through it, the ground (a free pile, or a ball alone on a wall, needs none)."""
-    level: dict[int, int] = {}
-    links: dict[int, list[Manifold]] = {}
-    for m in manifolds:  # every manifold the narrowphase kept is solved as touching
-        a, b = m.body_a, m.body_b
-        if a.inv_mass == 0.0 and b.inv_mass > 0.0:
-            level[id(b)] = 1
-        elif b.inv_mass == 0.0 and a.inv_mass > 0.0:
-            level[id(a)] = 1
-        elif a.inv_mass > 0.0 and b.inv_mass > 0.0:
-            links.setdefault(id(a), []).append(m)
-            links.setdefault(id(b), []).append(m)
-    if not links or not level:
-        return []  # no body between another and the ground: nothing to propagate
-    frontier = list(level)
-    while frontier:
-        nearer = []
-        for key in frontier:
-            for m in links.get(key, ()):
-                other = id(m.body_b) if id(m.body_a) == key else id(m.body_a)
-                if other not in level:
-                    level[other] = level[key] + 1
-                    nearer.append(other)
-        frontier = nearer
-    def depth(body) -> int | None:
-        return 0 if body.inv_mass == 0.0 else level.get(id(body))
-
-    chain = []
-    for k, m in enumerate(manifolds):
-        da, db = depth(m.body_a), depth(m.body_b)
-        if da is not None and db is not None and da != db:
-            chain.append((min(da, db), k, m, da < db))
-    return [(m, a_nearer) for _, _, m, a_nearer in sorted(chain, key=lambda c: c[:2])]
+@kernel
+def _relative_velocity(bodies: np.ndarray, a: int, b: int, col: int, rax: float, ray: float, rbx: float,
+                       rby: float) -> tuple[float, float]:
+    """Velocity of B's point rb relative to A's point ra; `col` = B_VX for velocities, B_PUSH_X for
+    split-impulse pseudo-velocities."""
+    return (bodies[b, col] - bodies[b, col + 2] * rby - bodies[a, col] + bodies[a, col + 2] * ray,
+            bodies[b, col + 1] + bodies[b, col + 2] * rbx - bodies[a, col + 1] - bodies[a, col + 2] * rax)
 
 
-def propagate_shock(chain: list[tuple[Manifold, bool]], dt: float = 0.0, beta: float = 0.0, slop: float = 0.0,
-                    max_push: float = 0.0) -> None:
-    """Shock propagation (Guendelman, Bridson and Fedkiw 2003), after the Gauss-Seidel sweeps: from
-    the ground outwards, each body nearer the ground is taken as immovable and the farther one alone
-    is stopped from closing on it. Sequential impulses converge slowly when a heavy body presses a
-    light one against a wall (the light one is squeezed into the wall); this pass lets the wall's
-    resistance reach the heavy body through the light one. It only ever stops an approach, so a
-    converged solve is left as it is.
-
-    With `dt` it acts on the split-impulse pseudo-velocities instead (the overlap's push targets),
-    so an overlap already made is pushed out on the far body's side."""
-    pushes = dt > 0.0
-    for m, a_is_grounded in chain:
-        free = m.body_b if a_is_grounded else m.body_a
-        sign = 1.0 if a_is_grounded else -1.0  # an impulse along n pushes B away from A
-        nx, ny = m.nx, m.ny
-        for p in m.points:
-            if pushes:
-                vn = _push_velocity(m, p.ra_x, p.ra_y, p.rb_x, p.rb_y)
-                target = min(beta * max(-(p.separation + slop), 0.0), max_push) / dt
-            else:
-                dvx, dvy = _relative_velocity(m, p.ra_x, p.ra_y, p.rb_x, p.rb_y)
-                vn, target = dvx * nx + dvy * ny, 0.0
-            if vn >= target:
-                continue
-            rx, ry = (p.rb_x, p.rb_y) if a_is_grounded else (p.ra_x, p.ra_y)
-            rn = rx * ny - ry * nx
-            k = free.inv_mass + free.inv_inertia * rn * rn
-            lam = sign * (target - vn) / k
-            px, py = lam * nx, lam * ny
-            if pushes:
-                s = free.scratch
-                s.push_x += free.inv_mass * px
-                s.push_y += free.inv_mass * py
-                s.push_spin += free.inv_inertia * (rx * py - ry * px)
-            else:
-                free.vx += free.inv_mass * px
-                free.vy += free.inv_mass * py
-                free.spin += free.inv_inertia * (rx * py - ry * px)
+@kernel
+def _apply(bodies: np.ndarray, a: int, b: int, col: int, px: float, py: float, rax: float, ray: float, rbx: float,
+           rby: float) -> None:
+    """Apply impulse P at a point: -P to A, +P to B (to velocities or pseudo-velocities, by `col`)."""
+    bodies[a, col] -= bodies[a, B_INV_MASS] * px
+    bodies[a, col + 1] -= bodies[a, B_INV_MASS] * py
+    bodies[a, col + 2] -= bodies[a, B_INV_INERTIA] * (rax * py - ray * px)
+    bodies[b, col] += bodies[b, B_INV_MASS] * px
+    bodies[b, col + 1] += bodies[b, B_INV_MASS] * py
+    bodies[b, col + 2] += bodies[b, B_INV_INERTIA] * (rbx * py - rby * px)
 
 
-def _iterate(manifolds: list[Manifold], iterations: int, friction: bool) -> None:
-    for _ in range(iterations):
-        solve_velocities(manifolds, friction)
+@kernel
+def _push_target(separation: float, dt: float, beta: float, slop: float, max_push: float) -> float:
+    """The pseudo-velocity that removes `beta` of the overlap beyond `slop` (at most `max_push`) in dt."""
+    return _min(beta * _max(-(separation + slop), 0.0), max_push) / dt
 
 
-def prepare(manifolds: list[Manifold]) -> None:
-    for m in manifolds:
-        a, b = m.body_a, m.body_b
-        nx, ny = m.nx, m.ny
-        ma, mb, ia, ib = a.inv_mass, b.inv_mass, a.inv_inertia, b.inv_inertia
-        for p in m.points:
-            rax, ray = p.x - a.x, p.y - a.y
-            rbx, rby = p.x - b.x, p.y - b.y
-            p.ra_x, p.ra_y, p.rb_x, p.rb_y = rax, ray, rbx, rby
-            rna = rax * ny - ray * nx
-            rnb = rbx * ny - rby * nx
-            k = ma + mb + ia * rna * rna + ib * rnb * rnb
-            p.normal_mass = 1.0 / k if k > 0.0 else 0.0
-            # Tangent t = (ny, -nx); r x t = -(r . n).
-            rta = -(rax * nx + ray * ny)
-            rtb = -(rbx * nx + rby * ny)
-            k = ma + mb + ia * rta * rta + ib * rtb * rtb
-            p.tangent_mass = 1.0 / k if k > 0.0 else 0.0
-            dvx = b.vx - b.spin * rby - a.vx + a.spin * ray
-            dvy = b.vy + b.spin * rbx - a.vy - a.spin * rax
-            p.approach_speed = dvx * nx + dvy * ny
-        m.block = False
-        if len(m.points) == 2:
-            p1, p2 = m.points
-            rn1a = p1.ra_x * ny - p1.ra_y * nx
-            rn1b = p1.rb_x * ny - p1.rb_y * nx
-            rn2a = p2.ra_x * ny - p2.ra_y * nx
-            rn2b = p2.rb_x * ny - p2.rb_y * nx
-            m.k11 = ma + mb + ia * rn1a * rn1a + ib * rn1b * rn1b
-            m.k22 = ma + mb + ia * rn2a * rn2a + ib * rn2b * rn2b
-            m.k12 = ma + mb + ia * rn1a * rn2a + ib * rn1b * rn2b
-            det = m.k11 * m.k22 - m.k12 * m.k12
-            m.block = m.k11 * m.k11 < BLOCK_MAX_CONDITION * det
+@kernel
+def _kinetic_energy(bodies: np.ndarray, k: int) -> float:
+    if not bodies[k, B_INV_MASS] > 0.0:
+        return 0.0
+    vx, vy, spin = bodies[k, B_VX], bodies[k, B_VY], bodies[k, B_SPIN]
+    return 0.5 * (bodies[k, B_MASS] * (vx * vx + vy * vy) + bodies[k, B_INERTIA] * spin * spin)
 
 
-def _apply(m: Manifold, px: float, py: float, rax: float, ray: float, rbx: float, rby: float) -> None:
-    """Apply impulse P at a point: -P to A, +P to B."""
-    a, b = m.body_a, m.body_b
-    a.vx -= a.inv_mass * px
-    a.vy -= a.inv_mass * py
-    a.spin -= a.inv_inertia * (rax * py - ray * px)
-    b.vx += b.inv_mass * px
-    b.vy += b.inv_mass * py
-    b.spin += b.inv_inertia * (rbx * py - rby * px)
-
-
-def warm_start(manifolds: list[Manifold]) -> None:
-    for m in manifolds:
-        nx, ny = m.nx, m.ny
-        for p in m.points:
-            if p.normal_impulse or p.tangent_impulse:
-                px = p.normal_impulse * nx + p.tangent_impulse * ny
-                py = p.normal_impulse * ny - p.tangent_impulse * nx
-                _apply(m, px, py, p.ra_x, p.ra_y, p.rb_x, p.rb_y)
-
-
-def _relative_velocity(m: Manifold, rax: float, ray: float, rbx: float, rby: float) -> tuple[float, float]:
-    a, b = m.body_a, m.body_b
-    return (b.vx - b.spin * rby - a.vx + a.spin * ray,
-            b.vy + b.spin * rbx - a.vy - a.spin * rax)
-
-
+@kernel
 def solve_block(k11: float, k12: float, k22: float, b1: float, b2: float, a1: float, a2: float
                 ) -> tuple[float, float]:
     """Solve the two-point LCP  w = K x + b,  x >= 0,  w >= 0,  x·w = 0  by enumerating its four cases.
@@ -269,167 +127,589 @@ def solve_block(k11: float, k12: float, k22: float, b1: float, b2: float, a1: fl
     return a1, a2
 
 
-def solve_velocities(manifolds: list[Manifold], friction: bool) -> None:
-    """One Gauss-Seidel sweep over every manifold."""
-    for m in manifolds:
-        nx, ny = m.nx, m.ny
-        tx, ty = ny, -nx
-        points = m.points
-        if friction:
-            for p in points:
-                limit = p.friction * p.normal_impulse
-                if limit <= 0.0 and p.tangent_impulse == 0.0:
-                    continue
-                dvx, dvy = _relative_velocity(m, p.ra_x, p.ra_y, p.rb_x, p.rb_y)
-                lam = -p.tangent_mass * (dvx * tx + dvy * ty)
-                new = min(max(p.tangent_impulse + lam, -limit), limit)
-                lam = new - p.tangent_impulse
-                p.tangent_impulse = new
-                _apply(m, lam * tx, lam * ty, p.ra_x, p.ra_y, p.rb_x, p.rb_y)
-        if m.block:
-            p1, p2 = points
-            dv1x, dv1y = _relative_velocity(m, p1.ra_x, p1.ra_y, p1.rb_x, p1.rb_y)
-            dv2x, dv2y = _relative_velocity(m, p2.ra_x, p2.ra_y, p2.rb_x, p2.rb_y)
-            a1, a2 = p1.normal_impulse, p2.normal_impulse
-            b1 = dv1x * nx + dv1y * ny - (m.k11 * a1 + m.k12 * a2)
-            b2 = dv2x * nx + dv2y * ny - (m.k12 * a1 + m.k22 * a2)
-            x1, x2 = solve_block(m.k11, m.k12, m.k22, b1, b2, a1, a2)
-            d1, d2 = x1 - a1, x2 - a2
-            p1.normal_impulse, p2.normal_impulse = x1, x2
-            _apply(m, d1 * nx, d1 * ny, p1.ra_x, p1.ra_y, p1.rb_x, p1.rb_y)
-            _apply(m, d2 * nx, d2 * ny, p2.ra_x, p2.ra_y, p2.rb_x, p2.rb_y)
+# --- islands and the shock chain ------------------------------------------------------------------
+
+@kernel
+def _root(parent: np.ndarray, key: int) -> int:
+    while parent[key] != key:
+        parent[key] = parent[parent[key]]
+        key = parent[key]
+    return key
+
+
+@kernel
+def _islands(bodies: np.ndarray, pair: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The manifolds in groups that share no dynamic body (union-find): `order` lists manifold rows
+    island by island, each island in the original order, islands in the order their first manifold
+    comes; island i is order[start[i]:start[i + 1]]. Islands do not interact, so each is solved on
+    its own: a decision about one (the cold restart) never touches another, and a body solves the
+    same alone as beside others it never meets."""
+    n_bodies, n_manifolds = bodies.shape[0], pair.shape[0]
+    parent = np.arange(n_bodies)
+    for k in range(n_manifolds):
+        a, b = pair[k, 0], pair[k, 1]
+        if bodies[a, B_INV_MASS] > 0.0 and bodies[b, B_INV_MASS] > 0.0:
+            parent[_root(parent, b)] = _root(parent, a)
+    # A manifold with no dynamic body is an island of its own (key n_bodies + k).
+    label = np.full(n_bodies + n_manifolds, -1, dtype=np.int64)
+    island = np.empty(n_manifolds, dtype=np.int64)
+    count = 0
+    for k in range(n_manifolds):
+        a, b = pair[k, 0], pair[k, 1]
+        if bodies[a, B_INV_MASS] > 0.0:
+            key = _root(parent, a)
+        elif bodies[b, B_INV_MASS] > 0.0:
+            key = _root(parent, b)
         else:
-            for p in points:
-                dvx, dvy = _relative_velocity(m, p.ra_x, p.ra_y, p.rb_x, p.rb_y)
-                lam = -p.normal_mass * (dvx * nx + dvy * ny)
-                new = max(p.normal_impulse + lam, 0.0)
-                lam = new - p.normal_impulse
-                p.normal_impulse = new
-                _apply(m, lam * nx, lam * ny, p.ra_x, p.ra_y, p.rb_x, p.rb_y)
+            key = n_bodies + k
+        if label[key] < 0:
+            label[key] = count
+            count += 1
+        island[k] = label[key]
+    start = np.zeros(count + 1, dtype=np.int64)
+    for k in range(n_manifolds):
+        start[island[k] + 1] += 1
+    for i in range(count):
+        start[i + 1] += start[i]
+    fill = start[:count].copy()
+    order = np.empty(n_manifolds, dtype=np.int64)
+    for k in range(n_manifolds):
+        order[fill[island[k]]] = k
+        fill[island[k]] += 1
+    return order, start
+
+
+@kernel
+def _levels(bodies: np.ndarray, pair: np.ndarray) -> np.ndarray:
+    """Each dynamic body's distance from the ground (a wall or a windmill) in contacts: 1 = touches
+    the ground; -1 where no chain of contacts reaches it."""
+    n_bodies, n_manifolds = bodies.shape[0], pair.shape[0]
+    level = np.full(n_bodies, -1, dtype=np.int64)
+    links = np.zeros(n_bodies + 1, dtype=np.int64)
+    queue = np.empty(n_bodies, dtype=np.int64)
+    tail = 0
+    for k in range(n_manifolds):  # every manifold the narrowphase kept is solved as touching
+        a, b = pair[k, 0], pair[k, 1]
+        ma, mb = bodies[a, B_INV_MASS], bodies[b, B_INV_MASS]
+        grounded = -1
+        if ma == 0.0 and mb > 0.0:
+            grounded = b
+        elif mb == 0.0 and ma > 0.0:
+            grounded = a
+        elif ma > 0.0 and mb > 0.0:
+            links[a + 1] += 1
+            links[b + 1] += 1
+        if grounded >= 0 and level[grounded] < 0:
+            level[grounded] = 1
+            queue[tail] = grounded
+            tail += 1
+    for i in range(n_bodies):
+        links[i + 1] += links[i]
+    fill = links[:n_bodies].copy()
+    other = np.empty(links[n_bodies], dtype=np.int64)
+    for k in range(n_manifolds):
+        a, b = pair[k, 0], pair[k, 1]
+        if bodies[a, B_INV_MASS] > 0.0 and bodies[b, B_INV_MASS] > 0.0:
+            other[fill[a]] = b
+            fill[a] += 1
+            other[fill[b]] = a
+            fill[b] += 1
+    head = 0
+    while head < tail:  # breadth first: every body gets its least distance
+        key = queue[head]
+        head += 1
+        for j in range(links[key], links[key + 1]):
+            if level[other[j]] < 0:
+                level[other[j]] = level[key] + 1
+                queue[tail] = other[j]
+                tail += 1
+    return level
+
+
+@kernel
+def _shock_chain(bodies: np.ndarray, pair: np.ndarray, level: np.ndarray, order: np.ndarray, s: int, e: int,
+                 chain: np.ndarray, a_grounded: np.ndarray) -> int:
+    """Touching contacts of one island between bodies at different distances from the ground (at 0),
+    nearest the ground first (then in island order), into `chain`, each with whether its A is the body
+    nearer the ground; returns how many. None unless some dynamic body touches another and, through
+    it, the ground (a free pile, or a ball alone on a wall, needs none)."""
+    links = grounds = False
+    for t in range(s, e):
+        ma, mb = bodies[pair[order[t], 0], B_INV_MASS], bodies[pair[order[t], 1], B_INV_MASS]
+        if (ma == 0.0 and mb > 0.0) or (mb == 0.0 and ma > 0.0):
+            grounds = True
+        elif ma > 0.0 and mb > 0.0:
+            links = True
+    if not links or not grounds:
+        return 0  # no body between another and the ground: nothing to propagate
+    n = 0
+    nearest = np.empty(e - s, dtype=np.int64)
+    deepest = 0
+    for t in range(s, e):
+        k = order[t]
+        a, b = pair[k, 0], pair[k, 1]
+        da = 0 if bodies[a, B_INV_MASS] == 0.0 else level[a]
+        db = 0 if bodies[b, B_INV_MASS] == 0.0 else level[b]
+        if da >= 0 and db >= 0 and da != db:
+            chain[n], a_grounded[n], nearest[n] = k, da < db, min(da, db)
+            deepest = max(deepest, nearest[n])
+            n += 1
+    # A stable counting sort by distance keeps island order among equals.
+    count = np.zeros(deepest + 2, dtype=np.int64)
+    for c in range(n):
+        count[nearest[c] + 1] += 1
+    for d in range(deepest + 1):
+        count[d + 1] += count[d]
+    sorted_chain, sorted_grounded = chain[:n].copy(), a_grounded[:n].copy()
+    for c in range(n):
+        chain[count[nearest[c]]] = sorted_chain[c]
+        a_grounded[count[nearest[c]]] = sorted_grounded[c]
+        count[nearest[c]] += 1
+    return n
+
+
+@kernel
+def _propagate_shock(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray,
+                     points: np.ndarray, chain: np.ndarray, a_grounded: np.ndarray, n: int, pushes: bool,
+                     dt: float, beta: float, slop: float, max_push: float) -> None:
+    """Shock propagation (Guendelman, Bridson and Fedkiw 2003), after the Gauss-Seidel sweeps: from
+    the ground outwards, each body nearer the ground is taken as immovable and the farther one alone
+    is stopped from closing on it. Sequential impulses converge slowly when a heavy body presses a
+    light one against a wall (the light one is squeezed into the wall); this pass lets the wall's
+    resistance reach the heavy body through the light one. It only ever stops an approach, so a
+    converged solve is left as it is.
+
+    With `pushes` it acts on the split-impulse pseudo-velocities instead (the overlap's push
+    targets), so an overlap already made is pushed out on the far body's side."""
+    col = B_PUSH_X if pushes else B_VX
+    for c in range(n):
+        k, grounded = chain[c], a_grounded[c]
+        a, b = pair[k, 0], pair[k, 1]
+        free = b if grounded else a
+        sign = 1.0 if grounded else -1.0  # an impulse along n pushes B away from A
+        nx, ny = normals[k, M_NX], normals[k, M_NY]
+        for p in range(first[k], first[k + 1]):
+            rax, ray, rbx, rby = points[p, P_RA_X], points[p, P_RA_Y], points[p, P_RB_X], points[p, P_RB_Y]
+            dvx, dvy = _relative_velocity(bodies, a, b, col, rax, ray, rbx, rby)
+            vn = dvx * nx + dvy * ny
+            target = _push_target(points[p, P_SEP], dt, beta, slop, max_push) if pushes else 0.0
+            if vn >= target:
+                continue
+            rx, ry = (rbx, rby) if grounded else (rax, ray)
+            rn = rx * ny - ry * nx
+            k_free = bodies[free, B_INV_MASS] + bodies[free, B_INV_INERTIA] * rn * rn
+            lam = sign * (target - vn) / k_free
+            px, py = lam * nx, lam * ny
+            bodies[free, col] += bodies[free, B_INV_MASS] * px
+            bodies[free, col + 1] += bodies[free, B_INV_MASS] * py
+            bodies[free, col + 2] += bodies[free, B_INV_INERTIA] * (rx * py - ry * px)
+
+
+# --- one island's stages --------------------------------------------------------------------------
+
+@kernel
+def _prepare(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray, block: np.ndarray,
+             points: np.ndarray, order: np.ndarray, s: int, e: int, max_condition: float) -> None:
+    """Lever arms, effective masses and approach speeds; the block matrix of two-point manifolds,
+    and whether it is well enough conditioned to be solved as a block."""
+    for t in range(s, e):
+        k = order[t]
+        a, b = pair[k, 0], pair[k, 1]
+        nx, ny = normals[k, M_NX], normals[k, M_NY]
+        ma, mb = bodies[a, B_INV_MASS], bodies[b, B_INV_MASS]
+        ia, ib = bodies[a, B_INV_INERTIA], bodies[b, B_INV_INERTIA]
+        for p in range(first[k], first[k + 1]):
+            rax, ray = points[p, P_X] - bodies[a, B_X], points[p, P_Y] - bodies[a, B_Y]
+            rbx, rby = points[p, P_X] - bodies[b, B_X], points[p, P_Y] - bodies[b, B_Y]
+            points[p, P_RA_X], points[p, P_RA_Y], points[p, P_RB_X], points[p, P_RB_Y] = rax, ray, rbx, rby
+            rna = rax * ny - ray * nx
+            rnb = rbx * ny - rby * nx
+            kn = ma + mb + ia * rna * rna + ib * rnb * rnb
+            points[p, P_NORMAL_MASS] = 1.0 / kn if kn > 0.0 else 0.0
+            # Tangent t = (ny, -nx); r x t = -(r . n).
+            rta = -(rax * nx + ray * ny)
+            rtb = -(rbx * nx + rby * ny)
+            kt = ma + mb + ia * rta * rta + ib * rtb * rtb
+            points[p, P_TANGENT_MASS] = 1.0 / kt if kt > 0.0 else 0.0
+            dvx, dvy = _relative_velocity(bodies, a, b, B_VX, rax, ray, rbx, rby)
+            points[p, P_APPROACH] = dvx * nx + dvy * ny
+        block[k] = False
+        if first[k + 1] - first[k] == 2:
+            p1, p2 = first[k], first[k] + 1
+            rn1a = points[p1, P_RA_X] * ny - points[p1, P_RA_Y] * nx
+            rn1b = points[p1, P_RB_X] * ny - points[p1, P_RB_Y] * nx
+            rn2a = points[p2, P_RA_X] * ny - points[p2, P_RA_Y] * nx
+            rn2b = points[p2, P_RB_X] * ny - points[p2, P_RB_Y] * nx
+            k11 = ma + mb + ia * rn1a * rn1a + ib * rn1b * rn1b
+            k22 = ma + mb + ia * rn2a * rn2a + ib * rn2b * rn2b
+            k12 = ma + mb + ia * rn1a * rn2a + ib * rn1b * rn2b
+            normals[k, M_K11], normals[k, M_K12], normals[k, M_K22] = k11, k12, k22
+            det = k11 * k22 - k12 * k12
+            block[k] = k11 * k11 < max_condition * det
+
+
+@kernel
+def _warm_start(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray, points: np.ndarray,
+                order: np.ndarray, s: int, e: int) -> None:
+    """Re-apply the impulses carried over from last substep."""
+    for t in range(s, e):
+        k = order[t]
+        nx, ny = normals[k, M_NX], normals[k, M_NY]
+        for p in range(first[k], first[k + 1]):
+            jn, jt = points[p, P_NORMAL_IMPULSE], points[p, P_TANGENT_IMPULSE]
+            if jn != 0.0 or jt != 0.0:
+                _apply(bodies, pair[k, 0], pair[k, 1], B_VX, jn * nx + jt * ny, jn * ny - jt * nx, points[p, P_RA_X],
+                       points[p, P_RA_Y], points[p, P_RB_X], points[p, P_RB_Y])
+
+
+@kernel
+def _solve_velocities(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray,
+                      block: np.ndarray, points: np.ndarray, order: np.ndarray, s: int, e: int,
+                      friction: bool) -> None:
+    """One Gauss-Seidel sweep over the island's manifolds."""
+    for t in range(s, e):
+        k = order[t]
+        a, b = pair[k, 0], pair[k, 1]
+        nx, ny = normals[k, M_NX], normals[k, M_NY]
+        tx, ty = ny, -nx
+        if friction:
+            for p in range(first[k], first[k + 1]):
+                limit = points[p, P_FRICTION] * points[p, P_NORMAL_IMPULSE]
+                if limit <= 0.0 and points[p, P_TANGENT_IMPULSE] == 0.0:
+                    continue
+                rax, ray, rbx, rby = points[p, P_RA_X], points[p, P_RA_Y], points[p, P_RB_X], points[p, P_RB_Y]
+                dvx, dvy = _relative_velocity(bodies, a, b, B_VX, rax, ray, rbx, rby)
+                lam = -points[p, P_TANGENT_MASS] * (dvx * tx + dvy * ty)
+                new = _min(_max(points[p, P_TANGENT_IMPULSE] + lam, -limit), limit)
+                lam = new - points[p, P_TANGENT_IMPULSE]
+                points[p, P_TANGENT_IMPULSE] = new
+                _apply(bodies, a, b, B_VX, lam * tx, lam * ty, rax, ray, rbx, rby)
+        if block[k]:
+            p1, p2 = first[k], first[k] + 1
+            dv1x, dv1y = _relative_velocity(bodies, a, b, B_VX, points[p1, P_RA_X], points[p1, P_RA_Y],
+                                            points[p1, P_RB_X], points[p1, P_RB_Y])
+            dv2x, dv2y = _relative_velocity(bodies, a, b, B_VX, points[p2, P_RA_X], points[p2, P_RA_Y],
+                                            points[p2, P_RB_X], points[p2, P_RB_Y])
+            k11, k12, k22 = normals[k, M_K11], normals[k, M_K12], normals[k, M_K22]
+            a1, a2 = points[p1, P_NORMAL_IMPULSE], points[p2, P_NORMAL_IMPULSE]
+            b1 = dv1x * nx + dv1y * ny - (k11 * a1 + k12 * a2)
+            b2 = dv2x * nx + dv2y * ny - (k12 * a1 + k22 * a2)
+            x1, x2 = solve_block(k11, k12, k22, b1, b2, a1, a2)
+            d1, d2 = x1 - a1, x2 - a2
+            points[p1, P_NORMAL_IMPULSE], points[p2, P_NORMAL_IMPULSE] = x1, x2
+            _apply(bodies, a, b, B_VX, d1 * nx, d1 * ny, points[p1, P_RA_X], points[p1, P_RA_Y], points[p1, P_RB_X],
+                   points[p1, P_RB_Y])
+            _apply(bodies, a, b, B_VX, d2 * nx, d2 * ny, points[p2, P_RA_X], points[p2, P_RA_Y], points[p2, P_RB_X],
+                   points[p2, P_RB_Y])
+        else:
+            for p in range(first[k], first[k + 1]):
+                rax, ray, rbx, rby = points[p, P_RA_X], points[p, P_RA_Y], points[p, P_RB_X], points[p, P_RB_Y]
+                dvx, dvy = _relative_velocity(bodies, a, b, B_VX, rax, ray, rbx, rby)
+                lam = -points[p, P_NORMAL_MASS] * (dvx * nx + dvy * ny)
+                new = _max(points[p, P_NORMAL_IMPULSE] + lam, 0.0)
+                lam = new - points[p, P_NORMAL_IMPULSE]
+                points[p, P_NORMAL_IMPULSE] = new
+                _apply(bodies, a, b, B_VX, lam * nx, lam * ny, rax, ray, rbx, rby)
+
+
+@kernel
+def _solve_split(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray, block: np.ndarray,
+                 points: np.ndarray, order: np.ndarray, s: int, e: int, dt: float, beta: float, slop: float,
+                 max_push: float) -> None:
+    """One sweep of split impulses: pseudo-velocities that will remove `beta` of the overlap beyond
+    `slop` this substep. They move positions only and are thrown away afterwards."""
+    for t in range(s, e):
+        k = order[t]
+        a, b = pair[k, 0], pair[k, 1]
+        nx, ny = normals[k, M_NX], normals[k, M_NY]
+        if block[k]:
+            p1, p2 = first[k], first[k] + 1
+            t1 = _push_target(points[p1, P_SEP], dt, beta, slop, max_push)
+            t2 = _push_target(points[p2, P_SEP], dt, beta, slop, max_push)
+            a1, a2 = points[p1, P_PUSH_IMPULSE], points[p2, P_PUSH_IMPULSE]
+            if t1 == 0.0 and t2 == 0.0 and a1 == 0.0 and a2 == 0.0:
+                continue
+            k11, k12, k22 = normals[k, M_K11], normals[k, M_K12], normals[k, M_K22]
+            dv1x, dv1y = _relative_velocity(bodies, a, b, B_PUSH_X, points[p1, P_RA_X], points[p1, P_RA_Y],
+                                            points[p1, P_RB_X], points[p1, P_RB_Y])
+            dv2x, dv2y = _relative_velocity(bodies, a, b, B_PUSH_X, points[p2, P_RA_X], points[p2, P_RA_Y],
+                                            points[p2, P_RB_X], points[p2, P_RB_Y])
+            b1 = dv1x * nx + dv1y * ny - t1 - (k11 * a1 + k12 * a2)
+            b2 = dv2x * nx + dv2y * ny - t2 - (k12 * a1 + k22 * a2)
+            x1, x2 = solve_block(k11, k12, k22, b1, b2, a1, a2)
+            d1, d2 = x1 - a1, x2 - a2
+            points[p1, P_PUSH_IMPULSE], points[p2, P_PUSH_IMPULSE] = x1, x2
+            _apply(bodies, a, b, B_PUSH_X, d1 * nx, d1 * ny, points[p1, P_RA_X], points[p1, P_RA_Y],
+                   points[p1, P_RB_X], points[p1, P_RB_Y])
+            _apply(bodies, a, b, B_PUSH_X, d2 * nx, d2 * ny, points[p2, P_RA_X], points[p2, P_RA_Y],
+                   points[p2, P_RB_X], points[p2, P_RB_Y])
+            continue
+        for p in range(first[k], first[k + 1]):
+            target = _push_target(points[p, P_SEP], dt, beta, slop, max_push)
+            if target == 0.0 and points[p, P_PUSH_IMPULSE] == 0.0:
+                continue
+            rax, ray, rbx, rby = points[p, P_RA_X], points[p, P_RA_Y], points[p, P_RB_X], points[p, P_RB_Y]
+            dvx, dvy = _relative_velocity(bodies, a, b, B_PUSH_X, rax, ray, rbx, rby)
+            lam = -points[p, P_NORMAL_MASS] * (dvx * nx + dvy * ny - target)
+            new = _max(points[p, P_PUSH_IMPULSE] + lam, 0.0)
+            lam = new - points[p, P_PUSH_IMPULSE]
+            points[p, P_PUSH_IMPULSE] = new
+            _apply(bodies, a, b, B_PUSH_X, lam * nx, lam * ny, rax, ray, rbx, rby)
+
+
+@kernel
+def _solve_ngs(bodies: np.ndarray, pair: np.ndarray, first: np.ndarray, points: np.ndarray, order: np.ndarray,
+               s: int, e: int, beta: float, slop: float, max_correction: float) -> None:
+    """One sweep of non-linear Gauss-Seidel (Box2D v2's position solver): re-measure each point's
+    separation at the current poses and move the bodies directly."""
+    for t in range(s, e):
+        k = order[t]
+        a, b = pair[k, 0], pair[k, 1]
+        ma, mb = bodies[a, B_INV_MASS], bodies[b, B_INV_MASS]
+        ia, ib = bodies[a, B_INV_INERTIA], bodies[b, B_INV_INERTIA]
+        for p in range(first[k], first[k + 1]):
+            ref_is_a = points[p, P_REF_IS_A] != 0.0
+            ref, inc = (a, b) if ref_is_a else (b, a)
+            cr, sr = math.cos(bodies[ref, B_ANGLE]), math.sin(bodies[ref, B_ANGLE])
+            ci, si = math.cos(bodies[inc, B_ANGLE]), math.sin(bodies[inc, B_ANGLE])
+            lnx, lny = points[p, P_LNX], points[p, P_LNY]
+            nx, ny = cr * lnx - sr * lny, sr * lnx + cr * lny
+            fx, fy = points[p, P_LFX], points[p, P_LFY]
+            face_x, face_y = bodies[ref, B_X] + cr * fx - sr * fy, bodies[ref, B_Y] + sr * fx + cr * fy
+            qx, qy = points[p, P_LQX], points[p, P_LQY]
+            clip_x, clip_y = bodies[inc, B_X] + ci * qx - si * qy, bodies[inc, B_Y] + si * qx + ci * qy
+            sep = (clip_x - face_x) * nx + (clip_y - face_y) * ny
+            correction = _min(_max(beta * (sep + slop), -max_correction), 0.0)
+            if correction == 0.0:
+                continue
+            if not ref_is_a:
+                nx, ny = -nx, -ny  # normal from A to B
+            rax, ray = clip_x - bodies[a, B_X], clip_y - bodies[a, B_Y]
+            rbx, rby = clip_x - bodies[b, B_X], clip_y - bodies[b, B_Y]
+            rna = rax * ny - ray * nx
+            rnb = rbx * ny - rby * nx
+            kn = ma + mb + ia * rna * rna + ib * rnb * rnb
+            if kn <= 0.0:
+                continue
+            lam = -correction / kn
+            px, py = lam * nx, lam * ny
+            bodies[a, B_X] -= ma * px
+            bodies[a, B_Y] -= ma * py
+            bodies[a, B_ANGLE] -= ia * (rax * py - ray * px)
+            bodies[b, B_X] += mb * px
+            bodies[b, B_Y] += mb * py
+            bodies[b, B_ANGLE] += ib * (rbx * py - rby * px)
+
+
+@kernel
+def solve_contacts(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray, block: np.ndarray,
+                   points: np.ndarray, warm: bool, iterations: int, position_iterations: int, correction: int,
+                   dt: float, friction: bool, beta: float, slop: float, max_push: float,
+                   max_condition: float) -> int:
+    """One substep's contact solve over packed arrays, island by island: velocities, then position
+    error removed without touching them. Returns how many islands threw their warm start away for a
+    cold solve.
+
+    Rows: `bodies` (B_ columns), `normals` (M_ columns) and `pair` (body rows of A and B) per
+    manifold, manifold k's points are rows first[k]:first[k + 1] of `points` (P_ columns); `block`
+    per manifold is written. Bodies, manifolds and points are updated in place."""
+    order, start = _islands(bodies, pair)
+    level = _levels(bodies, pair)
+    n_bodies, n_manifolds = bodies.shape[0], pair.shape[0]
+    seen = np.full(n_bodies, -1, dtype=np.int64)
+    dynamic = np.empty(n_bodies, dtype=np.int64)
+    saved = np.empty((n_bodies, 3))
+    chain = np.empty(n_manifolds, dtype=np.int64)
+    a_grounded = np.empty(n_manifolds, dtype=np.bool_)
+    cold_restarts = 0
+    for i in range(len(start) - 1):
+        s, e = start[i], start[i + 1]
+        # The island's dynamic bodies, in the order they first come.
+        n_dynamic = 0
+        for t in range(s, e):
+            for side in range(2):
+                body = pair[order[t], side]
+                if bodies[body, B_INV_MASS] > 0.0 and seen[body] != i:
+                    seen[body] = i
+                    dynamic[n_dynamic] = body
+                    n_dynamic += 1
+        _prepare(bodies, normals, pair, first, block, points, order, s, e, max_condition)
+        if warm:
+            # Kinetic energies added left to right in that order (a plain sum, the same on every Python).
+            before = 0.0
+            for j in range(n_dynamic):
+                saved[j, 0], saved[j, 1], saved[j, 2] = bodies[dynamic[j], B_VX], bodies[dynamic[j], B_VY], \
+                    bodies[dynamic[j], B_SPIN]
+                before += _kinetic_energy(bodies, dynamic[j])
+            _warm_start(bodies, normals, pair, first, points, order, s, e)
+            for _ in range(iterations):
+                _solve_velocities(bodies, normals, pair, first, block, points, order, s, e, friction)
+            after = 0.0
+            for j in range(n_dynamic):
+                after += _kinetic_energy(bodies, dynamic[j])
+            if after > before * (1.0 + 1e-12):
+                # A contact solve without restitution can only take energy away; a cold Gauss-Seidel
+                # sweep never adds any, but last substep's impulses re-applied to contacts that are
+                # now opening can. Fall back to the cold solve.
+                cold_restarts += 1
+                for j in range(n_dynamic):
+                    bodies[dynamic[j], B_VX], bodies[dynamic[j], B_VY], bodies[dynamic[j], B_SPIN] = \
+                        saved[j, 0], saved[j, 1], saved[j, 2]
+                for t in range(s, e):
+                    for p in range(first[order[t]], first[order[t] + 1]):
+                        points[p, P_NORMAL_IMPULSE] = points[p, P_TANGENT_IMPULSE] = 0.0
+                for _ in range(iterations):
+                    _solve_velocities(bodies, normals, pair, first, block, points, order, s, e, friction)
+        else:
+            for _ in range(iterations):
+                _solve_velocities(bodies, normals, pair, first, block, points, order, s, e, friction)
+
+        n_chain = _shock_chain(bodies, pair, level, order, s, e, chain, a_grounded)
+        if n_chain:
+            _propagate_shock(bodies, normals, pair, first, points, chain, a_grounded, n_chain, False, 0.0, 0.0, 0.0,
+                             0.0)
+        if correction == SPLIT:
+            for _ in range(position_iterations):
+                _solve_split(bodies, normals, pair, first, block, points, order, s, e, dt, beta, slop, max_push)
+            if n_chain:
+                _propagate_shock(bodies, normals, pair, first, points, chain, a_grounded, n_chain, dt > 0.0, dt,
+                                 beta, slop, max_push)
+            for j in range(n_dynamic):  # move by the pseudo-velocity for dt, then forget it
+                body = dynamic[j]
+                bodies[body, B_X] += bodies[body, B_PUSH_X] * dt
+                bodies[body, B_Y] += bodies[body, B_PUSH_Y] * dt
+                bodies[body, B_ANGLE] += bodies[body, B_PUSH_SPIN] * dt
+                bodies[body, B_PUSH_X] = bodies[body, B_PUSH_Y] = bodies[body, B_PUSH_SPIN] = 0.0
+        elif correction == NGS:
+            for _ in range(position_iterations):
+                _solve_ngs(bodies, pair, first, points, order, s, e, beta, slop, max_push)
+    return cold_restarts
+
+
+# --- the adapter ----------------------------------------------------------------------------------
+
+def solve(manifolds: list[Manifold], knobs: Knobs, dt: float, friction: bool) -> int:
+    """One substep's contact solve (`solve_contacts` on this substep's manifolds, packed once).
+    Returns how many islands threw their warm start away for a cold solve."""
+    if not manifolds:
+        return 0
+    index: dict[int, int] = {}
+    bodies: list[Body] = []
+    body_a: list[int] = []
+    body_b: list[int] = []
+    manifold_rows: list[tuple[float, ...]] = []
+    first = [0]
+    points: list[ContactPoint] = []
+    for m in manifolds:
+        body = m.body_a
+        row = index.get(id(body))
+        if row is None:
+            row = index[id(body)] = len(bodies)
+            bodies.append(body)
+        body_a.append(row)
+        body = m.body_b
+        row = index.get(id(body))
+        if row is None:
+            row = index[id(body)] = len(bodies)
+            bodies.append(body)
+        body_b.append(row)
+        manifold_rows.append((m.nx, m.ny, 0.0, 0.0, 0.0))
+        points += m.points
+        first.append(len(points))
+
+    body_rows = np.array([(b.x, b.y, b.angle, b.vx, b.vy, b.spin, b.mass, b.inertia, b.inv_mass, b.inv_inertia,
+                           b.scratch.push_x, b.scratch.push_y, b.scratch.push_spin) for b in bodies], dtype=np.float64)
+    normals = np.array(manifold_rows, dtype=np.float64)
+    pair = np.array((body_a, body_b), dtype=np.int64).T.copy()
+    offsets = np.array(first, dtype=np.int64)
+    point_rows = np.empty((len(points), POINT_COLUMNS))
+    if points:
+        point_rows[:, :P_RA_X] = [(p.x, p.y, p.separation, p.friction, p.normal_impulse, p.tangent_impulse,
+                                   p.push_impulse) for p in points]
+        if knobs.position_correction == "ngs":
+            point_rows[:, P_REF_IS_A:] = [(p.ref_is_a, *p.local_normal, *p.local_face, *p.local_clip) for p in points]
+    block = np.empty(len(manifolds), dtype=np.bool_)
+
+    cold_restarts = solve_contacts(
+        body_rows, normals, pair, offsets, block, point_rows, bool(knobs.warm_start), int(knobs.iterations),
+        int(knobs.position_iterations), _CORRECTIONS[knobs.position_correction], float(dt), bool(friction),
+        POSITION_BETA, LINEAR_SLOP, MAX_CORRECTION, BLOCK_MAX_CONDITION)
+
+    for body, (x, y, angle, vx, vy, spin, push_x, push_y, push_spin) in zip(bodies, body_rows[:, _BODY_OUT].tolist()):
+        body.x = x
+        body.y = y
+        body.angle = angle
+        body.vx = vx
+        body.vy = vy
+        body.spin = spin
+        s = body.scratch
+        s.push_x = push_x
+        s.push_y = push_y
+        s.push_spin = push_spin
+    for p, (normal, tangent, push, rax, ray, rbx, rby, normal_mass, tangent_mass, approach) in zip(
+            points, point_rows[:, P_NORMAL_IMPULSE:P_APPROACH + 1].tolist()):
+        p.normal_impulse = normal
+        p.tangent_impulse = tangent
+        p.push_impulse = push
+        p.ra_x = rax
+        p.ra_y = ray
+        p.rb_x = rbx
+        p.rb_y = rby
+        p.normal_mass = normal_mass
+        p.tangent_mass = tangent_mass
+        p.approach_speed = approach
+    for m, is_block in zip(manifolds, block.tolist()):
+        m.block = is_block
+    two = np.flatnonzero(offsets[1:] - offsets[:-1] == 2)  # prepare fills K for two-point manifolds only
+    for k, (k11, k12, k22) in zip(two.tolist(), normals[two, M_K11:].tolist()):
+        m = manifolds[k]
+        m.k11 = k11
+        m.k12 = k12
+        m.k22 = k22
+    return cold_restarts
 
 
 def apply_restitution(manifolds: list[Manifold], threshold: float) -> int:
     """Poisson restitution: every point that was approaching faster than `threshold` gets e times
-    its compression impulse again. Returns how many points bounced."""
+    its compression impulse again. Returns how many points bounced.
+
+    A plain loop: it runs after `solve` has written each point back, and touches only the few points
+    of this substep's impacts."""
     bounced = 0
     for m in manifolds:
         nx, ny = m.nx, m.ny
+        a, b = m.body_a, m.body_b
         for p in m.points:
             if p.approach_speed >= -threshold or p.normal_impulse <= 0.0 or p.restitution <= 0.0:
                 continue
             e = p.restitution
             jn, jt = e * p.normal_impulse, e * p.tangent_impulse
-            _apply(m, jn * nx + jt * ny, jn * ny - jt * nx, p.ra_x, p.ra_y, p.rb_x, p.rb_y)
+            px, py = jn * nx + jt * ny, jn * ny - jt * nx
+            a.vx -= a.inv_mass * px
+            a.vy -= a.inv_mass * py
+            a.spin -= a.inv_inertia * (p.ra_x * py - p.ra_y * px)
+            b.vx += b.inv_mass * px
+            b.vy += b.inv_mass * py
+            b.spin += b.inv_inertia * (p.rb_x * py - p.rb_y * px)
             # The impact is over: nothing of it should be warm-started into the next substep.
             p.normal_impulse = p.tangent_impulse = 0.0
             bounced += 1
     return bounced
 
 
-# --- position correction -------------------------------------------------------------------------
+@warm_up("contact solver")
+def _warm() -> None:
+    ground = Body(x=0.0, y=0.0)
+    box = Body.dynamic(0.0, 0.5, 1.0, 1.0 / 6.0, vy=-1.0)
+    top = Body.dynamic(0.0, 1.5, 1.0, 1.0 / 6.0, vy=-1.0)
 
-def _push_velocity(m: Manifold, rax: float, ray: float, rbx: float, rby: float) -> float:
-    a, b = m.body_a.scratch, m.body_b.scratch
-    dvx = b.push_x - b.push_spin * rby - a.push_x + a.push_spin * ray
-    dvy = b.push_y + b.push_spin * rbx - a.push_y - a.push_spin * rax
-    return dvx * m.nx + dvy * m.ny
+    def point(x: float, y: float, separation: float) -> ContactPoint:
+        return ContactPoint(x=x, y=y, separation=separation, key=(x,), restitution=0.5, friction=0.5,
+                            local_normal=(0.0, 1.0), local_face=(x, 0.0), local_clip=(x, -0.5))
 
-
-def _apply_push(m: Manifold, px: float, py: float, rax: float, ray: float, rbx: float, rby: float) -> None:
-    a, b = m.body_a, m.body_b
-    sa, sb = a.scratch, b.scratch
-    sa.push_x -= a.inv_mass * px
-    sa.push_y -= a.inv_mass * py
-    sa.push_spin -= a.inv_inertia * (rax * py - ray * px)
-    sb.push_x += b.inv_mass * px
-    sb.push_y += b.inv_mass * py
-    sb.push_spin += b.inv_inertia * (rbx * py - rby * px)
-
-
-def solve_split(manifolds: list[Manifold], dt: float, beta: float, slop: float, max_push: float) -> None:
-    """One sweep of split impulses: pseudo-velocities that will remove `beta` of the overlap beyond
-    `slop` this substep. They move positions only and are thrown away afterwards."""
-    for m in manifolds:
-        nx, ny = m.nx, m.ny
-        points = m.points
-        if m.block:
-            p1, p2 = points
-            t1 = min(beta * max(-(p1.separation + slop), 0.0), max_push) / dt
-            t2 = min(beta * max(-(p2.separation + slop), 0.0), max_push) / dt
-            if t1 == 0.0 and t2 == 0.0 and p1.push_impulse == 0.0 and p2.push_impulse == 0.0:
-                continue
-            a1, a2 = p1.push_impulse, p2.push_impulse
-            b1 = _push_velocity(m, p1.ra_x, p1.ra_y, p1.rb_x, p1.rb_y) - t1 - (m.k11 * a1 + m.k12 * a2)
-            b2 = _push_velocity(m, p2.ra_x, p2.ra_y, p2.rb_x, p2.rb_y) - t2 - (m.k12 * a1 + m.k22 * a2)
-            x1, x2 = solve_block(m.k11, m.k12, m.k22, b1, b2, a1, a2)
-            d1, d2 = x1 - a1, x2 - a2
-            p1.push_impulse, p2.push_impulse = x1, x2
-            _apply_push(m, d1 * nx, d1 * ny, p1.ra_x, p1.ra_y, p1.rb_x, p1.rb_y)
-            _apply_push(m, d2 * nx, d2 * ny, p2.ra_x, p2.ra_y, p2.rb_x, p2.rb_y)
-            continue
-        for p in points:
-            target = min(beta * max(-(p.separation + slop), 0.0), max_push) / dt
-            if target == 0.0 and p.push_impulse == 0.0:
-                continue
-            vn = _push_velocity(m, p.ra_x, p.ra_y, p.rb_x, p.rb_y)
-            lam = -p.normal_mass * (vn - target)
-            new = max(p.push_impulse + lam, 0.0)
-            lam = new - p.push_impulse
-            p.push_impulse = new
-            _apply_push(m, lam * nx, lam * ny, p.ra_x, p.ra_y, p.rb_x, p.rb_y)
-
-
-def apply_pushes(manifolds: list[Manifold], dt: float) -> None:
-    """Move every body by its split-impulse pseudo-velocity for dt, then forget it."""
-    moved = set()
-    for m in manifolds:
-        for body in (m.body_a, m.body_b):
-            if body.inv_mass > 0.0 and id(body) not in moved:
-                moved.add(id(body))
-                s = body.scratch
-                body.x += s.push_x * dt
-                body.y += s.push_y * dt
-                body.angle += s.push_spin * dt
-                s.push_x = s.push_y = s.push_spin = 0.0
-
-
-def solve_ngs(manifolds: list[Manifold], beta: float, slop: float, max_correction: float) -> float:
-    """One sweep of non-linear Gauss-Seidel (Box2D v2's position solver): re-measure each point's
-    separation at the current poses and move the bodies directly. Returns the worst separation seen."""
-    worst = 0.0
-    for m in manifolds:
-        a, b = m.body_a, m.body_b
-        ma, mb, ia, ib = a.inv_mass, b.inv_mass, a.inv_inertia, b.inv_inertia
-        for p in m.points:
-            ref, inc = (a, b) if p.ref_is_a else (b, a)
-            cr, sr = math.cos(ref.angle), math.sin(ref.angle)
-            ci, si = math.cos(inc.angle), math.sin(inc.angle)
-            lnx, lny = p.local_normal
-            nx, ny = cr * lnx - sr * lny, sr * lnx + cr * lny
-            fx, fy = p.local_face
-            face_x, face_y = ref.x + cr * fx - sr * fy, ref.y + sr * fx + cr * fy
-            qx, qy = p.local_clip
-            clip_x, clip_y = inc.x + ci * qx - si * qy, inc.y + si * qx + ci * qy
-            sep = (clip_x - face_x) * nx + (clip_y - face_y) * ny
-            worst = min(worst, sep)
-            correction = min(max(beta * (sep + slop), -max_correction), 0.0)
-            if correction == 0.0:
-                continue
-            if not p.ref_is_a:
-                nx, ny = -nx, -ny  # normal from A to B
-            rax, ray = clip_x - a.x, clip_y - a.y
-            rbx, rby = clip_x - b.x, clip_y - b.y
-            rna = rax * ny - ray * nx
-            rnb = rbx * ny - rby * nx
-            k = ma + mb + ia * rna * rna + ib * rnb * rnb
-            if k <= 0.0:
-                continue
-            lam = -correction / k
-            px, py = lam * nx, lam * ny
-            a.x -= ma * px
-            a.y -= ma * py
-            a.angle -= ia * (rax * py - ray * px)
-            b.x += mb * px
-            b.y += mb * py
-            b.angle += ib * (rbx * py - rby * px)
-    return worst
+    for correction in ("split", "ngs"):
+        manifolds = [Manifold(1, -1, box, ground, 0.0, -1.0, [point(-0.5, 0.0, -0.01), point(0.5, 0.0, -0.01)]),
+                     Manifold(1, 2, box, top, 0.0, 1.0, [point(0.0, 1.0, -0.01)])]
+        solve(manifolds, Knobs(position_correction=correction), 1.0 / 240.0, True)
+        apply_restitution(manifolds, 0.05)
+    solve_block(2.0, 1.0, 2.0, -1.0, -1.0, 0.0, 0.0)

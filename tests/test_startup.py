@@ -31,7 +31,7 @@ SCENE = SCENES_DIR / "flat-wall.yaml"
 # line by line, directly (test_collide, test_grid) and through the pipeline (hard cases, systems,
 # random shapes in a box, parallel shots on holes); about 10 s interpreted on 2 cores.
 INTERPRETED = ["tests/test_collide.py", "tests/test_hard_cases.py", "tests/test_systems.py", "tests/test_grid.py",
-               "tests/test_property.py", "tests/test_shots.py"]
+               "tests/test_property.py", "tests/test_shots.py", "tests/test_solver.py"]
 
 
 class Terminal(io.StringIO):

@@ -25,6 +25,8 @@ from polygolf.game.startup import LEAD, ConsoleProgress
 from polygolf.game.views.loading import FRAME_BUDGET, LoadingView
 from polygolf.game.views.menu import MenuView
 
+from .test_screens import window  # noqa: F401  (the one test window)
+
 ROOT = Path(__file__).resolve().parent.parent
 SCENE = SCENES_DIR / "flat-wall.yaml"
 # The physics tests run again interpreted: the kernels of collide.py, toi.py, geometry.py and grid.py
@@ -178,15 +180,7 @@ def test_prepare_physics_runs_every_warm_up(monkeypatch):
 
 # --- the loading screen ----------------------------------------------------------------------------
 
-@pytest.fixture(scope="module")
-def window():
-    assert os.environ.get("DISPLAY"), "window tests need a display: run under Xvfb (pytest-xvfb does it)"
-    win = arcade.Window(1280, 720, "PolyGolf test", resizable=True)
-    yield win
-    win.close()
-
-
-def test_loading_screen_draws_between_slow_steps_then_moves_on(window, tmp_path):
+def test_loading_screen_draws_between_slow_steps_then_moves_on(window, tmp_path):  # noqa: F811
     events: list[str] = []
     console = ConsoleProgress(Terminal(), quiet_for=0.0)
 
@@ -221,7 +215,7 @@ def test_loading_screen_draws_between_slow_steps_then_moves_on(window, tmp_path)
     assert filled and abs(min(filled) - 360) <= 3 and abs(max(filled) - (360 + 560 / 3)) <= 3
 
 
-def test_a_cached_start_passes_through_to_the_menu(window):
+def test_a_cached_start_passes_through_to_the_menu(window):  # noqa: F811
     jit.compile_kernels()  # loaded (or compiled, on a machine's first run) before the screen opens
     game = Game.load()
     flow = ScreenFlow(window, game)

@@ -47,6 +47,11 @@ class StaticWorld:
     grid: BoxGrid
     body: Body = field(default_factory=lambda: Body(x=0.0, y=0.0))
 
+    @property
+    def arrays(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """What a kernel reads of the walls: vertices, normals, piece rows, internal edges, hidden vertices."""
+        return self.pieces.verts, self.pieces.normals, self.pieces.first, self.internal, self.hidden
+
     @classmethod
     def of(cls, walls: Sequence[tuple[int, Wall]], cell_size: float) -> StaticWorld:
         """From (entity, wall) pairs, their seams already marked (assemble.mark_seams)."""

@@ -20,6 +20,8 @@ import numpy as np
 
 from polygolf.engine.physics.jit import kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
+from polygolf.engine.physics.settings import GAP_TOLERANCE
+from polygolf.engine.physics.toi import reaches_wall
 
 # Prefer polygon A's face unless B's is clearly better: stops the reference face flickering between
 # the two polygons when they are nearly parallel, which would spoil warm starting.
@@ -204,6 +206,37 @@ def collide_sets(va: np.ndarray, na: np.ndarray, fa: np.ndarray, vb: np.ndarray,
     return rows
 
 
+@kernel
+def wall_contacts(va: np.ndarray, na: np.ndarray, shape_verts: np.ndarray, shape_normals: np.ndarray,
+                  fa: np.ndarray, reach: np.ndarray, x: float, y: float, angle: float, vx: float, vy: float,
+                  spin: float, dt: float, pressed: bool, walls: tuple, pieces: np.ndarray,
+                  margin: float, out: np.ndarray) -> int:
+    """A body's contacts with the wall pieces listed (`collide_sets`, wall piece by wall piece),
+    keeping those of a piece only if the body touches it (within GAP_TOLERANCE), or is `pressed` by
+    another body, or would close the gap moving on as it is for dt (`toi.reaches_wall`): a ball
+    passing a corner it never touches is never hit. `va`, `na`: the body's pieces posed at (x, y,
+    angle); `shape_*`: the same in its own frame. Returns the rows kept, at the top of `out`."""
+    wv, wn, wf, internal, hidden = walls
+    rows = collide_sets(va, na, fa, wv, wn, wf, pieces, internal, hidden, True, margin, True, out)
+    kept = 0
+    k = 0
+    while k < rows:
+        piece = out[k, PIECE_B]
+        lowest = out[k, SEP]
+        end = k + 1
+        while end < rows and out[end, PIECE_B] == piece:
+            lowest = min(lowest, out[end, SEP])
+            end += 1
+        g = int(piece)
+        if pressed or lowest <= GAP_TOLERANCE or reaches_wall(shape_verts, shape_normals, fa, reach, x, y, angle,
+                                                              vx, vy, spin, dt, wv, wn, wf[g], wf[g + 1]):
+            for r in range(k, end):
+                out[kept] = out[r]
+                kept += 1
+        k = end
+    return kept
+
+
 # --- the same for callers holding vertex lists (tests, tools) ---------------------------------------
 
 @dataclass(slots=True)
@@ -264,5 +297,9 @@ def _warm() -> None:
     separation(square, normals, lifted, normals)
     va, na = _rows(square), _rows(normals)
     first = np.array([0, 4], dtype=np.int64)
+    walls = (_rows(lifted), na, first, np.zeros(4, dtype=np.bool_), np.zeros(4, dtype=np.bool_))
+    for pressed in (False, True):
+        wall_contacts(va, na, va, na, first, np.array([0.71]), 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0 / 240.0, pressed,
+                      walls, np.zeros(1, dtype=np.int64), 0.01, np.empty((2, ROW)))
     collide_sets(va, na, first, _rows(lifted), na, first, np.zeros(1, dtype=np.int64), NO_SEAMS, NO_SEAMS, False,
                  0.01, False, np.empty((2, ROW)))

@@ -167,11 +167,12 @@ def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reac
 
 
 @kernel
-def first_wall_hit(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, start: np.ndarray,
-                   end: np.ndarray, wv: np.ndarray, wn: np.ndarray, wfirst: np.ndarray, walls: np.ndarray,
-                   target: float, tolerance: float, allowance: float) -> float:
-    """The earliest impact of any piece of a body moving start -> end with any of the wall pieces
-    listed in `walls` (1.0 if none)."""
+def first_wall_hit(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, x0: float, y0: float,
+                   angle0: float, x1: float, y1: float, angle1: float, wv: np.ndarray, wn: np.ndarray,
+                   wfirst: np.ndarray, walls: np.ndarray, target: float, tolerance: float, allowance: float) -> float:
+    """The earliest impact of any piece of a body moving (x0, y0, angle0) -> (x1, y1, angle1) with
+    any of the wall pieces listed in `walls` (1.0 if none)."""
+    start, end = np.array((x0, y0, angle0)), np.array((x1, y1, angle1))
     best = 1.0
     for w in walls:
         for i in range(len(first) - 1):
@@ -199,14 +200,13 @@ def first_pair_hit(lva: np.ndarray, lna: np.ndarray, fa: np.ndarray, ra: np.ndar
 
 
 @kernel
-def reaches_wall(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, pose: np.ndarray,
-                 velocity: np.ndarray, dt: float, wv: np.ndarray, wn: np.ndarray, ws: int, we: int) -> bool:
-    """Whether the body, moving on with its velocity (vx, vy, spin) for dt, would press into the wall
-    piece (by more than GAP_TOLERANCE: a face that only grazes a corner, level with it, is not a
-    hit)."""
-    end = np.empty(3)
-    for k in range(3):
-        end[k] = pose[k] + velocity[k] * dt
+def reaches_wall(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, x: float, y: float,
+                 angle: float, vx: float, vy: float, spin: float, dt: float, wv: np.ndarray, wn: np.ndarray, ws: int,
+                 we: int) -> bool:
+    """Whether the body, moving on with its velocity for dt, would press into the wall piece (by
+    more than GAP_TOLERANCE: a face that only grazes a corner, level with it, is not a hit)."""
+    pose = np.array((x, y, angle))
+    end = np.array((x + vx * dt, y + vy * dt, angle + spin * dt))
     for i in range(len(first) - 1):
         if time_of_impact(lv, ln, first[i], first[i + 1], reach[i], pose, end, wv, wn, ws, we, -GAP_TOLERANCE,
                           GAP_TOLERANCE / 2, 0.0) < 1.0:
@@ -271,7 +271,8 @@ def _warm() -> None:
     start, end, still = np.array([0.0, 0.0, 0.0]), np.array([2.0, 0.0, 0.5]), np.array([3.0, 3.0, 0.0])
     walls = np.zeros(1, dtype=np.int64)
     args = (square.verts, square.normals, square.first, square.reach)
-    first_wall_hit(*args, start, end, wall.verts, wall.normals, wall.first, walls, 0.005, 0.001, 0.005)
+    first_wall_hit(*args, 0.0, 0.0, 0.0, 2.0, 0.0, 0.5, wall.verts, wall.normals, wall.first, walls, 0.005, 0.001,
+                   0.005)
     first_pair_hit(*args, start, end, *args, still, still, 0.005, 0.001, 0.005)
-    reaches_wall(*args, start, end, 1.0 / 240.0, wall.verts, wall.normals, 0, 4)
+    reaches_wall(*args, 0.0, 0.0, 0.0, 2.0, 0.0, 0.5, 1.0 / 240.0, wall.verts, wall.normals, 0, 4)
     pair_reaches(*args, 0.7, start, end, *args, 0.7, still, end, 1.0 / 240.0, 0.01, True, True)

@@ -45,9 +45,10 @@ class CCDProcessor(esper.Processor):
             for q, (ent, body, col) in enumerate(sweep):
                 if starts[q + 1] > starts[q]:
                     shape = col.shape
-                    t = first_wall_hit(shape.verts, shape.normals, shape.first, shape.reach, _start(body), _end(body),
-                                       walls.verts, walls.normals, walls.first, found[starts[q]:starts[q + 1]],
-                                       TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP)
+                    s = body.scratch
+                    t = first_wall_hit(shape.verts, shape.normals, shape.first, shape.reach, s.x0, s.y0, s.angle0,
+                                       body.x, body.y, body.angle, walls.verts, walls.normals, walls.first,
+                                       found[starts[q]:starts[q + 1]], TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP)
                     if t < 1.0:
                         first[ent] = t
         # No pair can need sweeping while no body steps half the linear slop.

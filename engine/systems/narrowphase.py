@@ -5,10 +5,21 @@ import numpy as np
 
 from polygolf.engine.components import Body, Collider, Wall
 from polygolf.engine.components.resources import Resources
-from polygolf.engine.physics.collide import FEATURE, NO_SEAMS, NX, NY, PIECE_A, PIECE_B, ROW, SEP, collide_sets
+from polygolf.engine.physics.collide import (
+    FEATURE,
+    NO_SEAMS,
+    NX,
+    NY,
+    PIECE_A,
+    PIECE_B,
+    ROW,
+    SEP,
+    collide_sets,
+    wall_contacts,
+)
 from polygolf.engine.physics.contact import Manifold, add_manifolds, combine, contact_points, make_point
 from polygolf.engine.physics.settings import CONTACT_MARGIN, GAP_TOLERANCE
-from polygolf.engine.physics.toi import pair_reaches, reaches_wall
+from polygolf.engine.physics.toi import pair_reaches
 
 
 class NarrowphaseProcessor(esper.Processor):
@@ -26,6 +37,13 @@ class NarrowphaseProcessor(esper.Processor):
     def __init__(self, res: Resources) -> None:
         self.config, self.candidates, self.contacts = res.config, res.candidates, res.contacts
         self.statics, self.stats = res.statics, res.stats
+        self._out = np.empty((64, ROW))
+
+    def _buffer(self, rows: int) -> np.ndarray:
+        """Room for `rows` contact rows, kept from one call to the next."""
+        if len(self._out) < rows:
+            self._out = np.empty((max(rows, 2 * len(self._out)), ROW))
+        return self._out
 
     def process(self) -> None:
         carried = self.contacts.carried() if self.config.knobs.warm_start else {}
@@ -65,30 +83,16 @@ class NarrowphaseProcessor(esper.Processor):
                     gapped[k], grew = False, True
                     pressed |= {ea, eb}
 
-        walls = self.statics.pieces
+        walls = self.statics.arrays
         for ent, found in self.candidates.walls.items():
             body, col = esper.component_for_entity(ent, Body), esper.component_for_entity(ent, Collider)
             verts, normals = col.posed(body.x, body.y, body.angle)
-            out = np.empty((2 * len(col.shape) * len(found), ROW))
-            count = collide_sets(verts, normals, col.shape.first, walls.verts, walls.normals, walls.first, found,
-                                 self.statics.internal, self.statics.hidden, True, CONTACT_MARGIN, True, out)
-            if not count:
-                continue
-            rows = out[:count].tolist()
-            kept: list[list[float]] = []
-            k = 0
-            while k < count:  # piece by piece of wall
-                piece = rows[k][PIECE_B]
-                end = k + 1
-                while end < count and rows[end][PIECE_B] == piece:
-                    end += 1
-                g = int(piece)
-                if ent in pressed or min(row[SEP] for row in rows[k:end]) <= GAP_TOLERANCE or reaches_wall(
-                        *_arrays(col), _pose(body), _velocity(body), dt, walls.verts, walls.normals,
-                        walls.first[g], walls.first[g + 1]):
-                    kept += rows[k:end]
-                # else: a gap this substep's motion will not close: nothing touches, nothing acts
-                k = end
+            shape = col.shape
+            out = self._buffer(2 * len(shape) * len(found))
+            count = wall_contacts(verts, normals, shape.verts, shape.normals, shape.first, shape.reach, body.x, body.y,
+                                  body.angle, body.vx, body.vy, body.spin, dt, ent in pressed, walls, found,
+                                  CONTACT_MARGIN, out)
+            kept = out[:count].tolist()
             if kept:
                 owner, index = self.statics.owner, self.statics.index
                 materials = {}

@@ -14,6 +14,15 @@ SCENES = ROOT / "content" / "scenes"
 PRESET_NAMES = ("fast", "balanced", "accurate")
 
 
+@pytest.fixture(scope="session", autouse=True)
+def compiled_kernels() -> None:
+    """Compile (or load) every physics kernel once, first: the processes tests start later (workers,
+    the command line) then load them from the cache instead of each compiling them at once."""
+    from polygolf.engine.physics.jit import compile_kernels
+
+    compile_kernels()
+
+
 @pytest.fixture(autouse=True)
 def isolated_user_data(tmp_path_factory, monkeypatch) -> Path:
     """Every test gets its own empty data folder: nothing is read from or written to the real one."""

@@ -174,15 +174,12 @@ class BoxGrid:
         self.cell_first, self.cell_items, self.large = _file(self.boxes, self.x0, self.y0, self.inv, self.nx, self.ny)
         self._seen = np.zeros(len(self.boxes), dtype=np.bool_)
         self._out = np.empty(len(self.boxes), dtype=np.int64)
+        # What a kernel needs to query the grid itself (the arguments of `_query` before `box`).
+        self.arrays = (self.boxes, self.x0, self.y0, self.inv, self.nx, self.ny, self.cell_first, self.cell_items,
+                       self.large)
 
     def __len__(self) -> int:
         return len(self.boxes)
-
-    @property
-    def arrays(self) -> tuple:
-        """What a kernel needs to query the grid itself (the arguments of `_query` before `box`)."""
-        return (self.boxes, self.x0, self.y0, self.inv, self.nx, self.ny, self.cell_first, self.cell_items,
-                self.large)
 
     def query(self, box) -> np.ndarray:
         """Indices of the boxes overlapping `box`, ascending."""
@@ -190,8 +187,9 @@ class BoxGrid:
         return self._out[:count].copy()
 
     def query_many(self, queries: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """The boxes each query box overlaps, as compressed rows: query q's are items[first[q]:first[q+1]]."""
-        return _query_many(*self.arrays, np.ascontiguousarray(queries, dtype=np.float64).reshape(-1, 4))
+        """The boxes each query box ((n, 4) float64) overlaps, as compressed rows: query q's are
+        items[first[q]:first[q+1]]."""
+        return _query_many(*self.arrays, queries)
 
 
 @warm_up("grid")

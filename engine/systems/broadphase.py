@@ -23,6 +23,7 @@ class BroadphaseProcessor(esper.Processor):
         walls: dict[int, np.ndarray] = {}
         if moving and len(self.statics.grid):
             first, found = self.statics.grid.query_many(boxes(moving))
+            first = first.tolist()
             walls = {ent: found[first[q]:first[q + 1]] for q, (ent, _, _) in enumerate(moving)
                      if first[q + 1] > first[q]}
         self.candidates.walls = walls

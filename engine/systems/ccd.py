@@ -42,6 +42,7 @@ class CCDProcessor(esper.Processor):
         if sweep and len(self.statics.grid):
             walls = self.statics.pieces
             starts, found = self.statics.grid.query_many(_swept(sweep))
+            starts = starts.tolist()
             for q, (ent, body, col) in enumerate(sweep):
                 if starts[q + 1] > starts[q]:
                     shape = col.shape

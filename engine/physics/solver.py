@@ -363,6 +363,43 @@ def _warm_start(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, first
 
 
 @kernel
+def _normal_block(bodies: np.ndarray, a: int, b: int, col: int, nx: float, ny: float, manifold: np.ndarray,
+                  points: np.ndarray, p1: int, impulse: int, t1: float, t2: float) -> None:
+    """A two-point manifold's normal impulses as one 2x2 complementarity problem, driving the
+    (pseudo-)velocity along the normal at each point to its target (0 for velocities)."""
+    p2 = p1 + 1
+    dv1x, dv1y = _relative_velocity(bodies, a, b, col, points[p1, P_RA_X], points[p1, P_RA_Y], points[p1, P_RB_X],
+                                    points[p1, P_RB_Y])
+    dv2x, dv2y = _relative_velocity(bodies, a, b, col, points[p2, P_RA_X], points[p2, P_RA_Y], points[p2, P_RB_X],
+                                    points[p2, P_RB_Y])
+    k11, k12, k22 = manifold[M_K11], manifold[M_K12], manifold[M_K22]
+    a1, a2 = points[p1, impulse], points[p2, impulse]
+    b1 = dv1x * nx + dv1y * ny - t1 - (k11 * a1 + k12 * a2)
+    b2 = dv2x * nx + dv2y * ny - t2 - (k12 * a1 + k22 * a2)
+    x1, x2 = solve_block(k11, k12, k22, b1, b2, a1, a2)
+    d1, d2 = x1 - a1, x2 - a2
+    points[p1, impulse], points[p2, impulse] = x1, x2
+    _apply(bodies, a, b, col, d1 * nx, d1 * ny, points[p1, P_RA_X], points[p1, P_RA_Y], points[p1, P_RB_X],
+           points[p1, P_RB_Y])
+    _apply(bodies, a, b, col, d2 * nx, d2 * ny, points[p2, P_RA_X], points[p2, P_RA_Y], points[p2, P_RB_X],
+           points[p2, P_RB_Y])
+
+
+@kernel
+def _normal_point(bodies: np.ndarray, a: int, b: int, col: int, nx: float, ny: float, points: np.ndarray, p: int,
+                  impulse: int, target: float) -> None:
+    """One point's normal impulse, accumulated and clamped at zero, driving the (pseudo-)velocity
+    along the normal to `target`."""
+    rax, ray, rbx, rby = points[p, P_RA_X], points[p, P_RA_Y], points[p, P_RB_X], points[p, P_RB_Y]
+    dvx, dvy = _relative_velocity(bodies, a, b, col, rax, ray, rbx, rby)
+    lam = -points[p, P_NORMAL_MASS] * (dvx * nx + dvy * ny - target)
+    new = _max(points[p, impulse] + lam, 0.0)
+    lam = new - points[p, impulse]
+    points[p, impulse] = new
+    _apply(bodies, a, b, col, lam * nx, lam * ny, rax, ray, rbx, rby)
+
+
+@kernel
 def _solve_velocities(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray,
                       block: np.ndarray, points: np.ndarray, order: np.ndarray, s: int, e: int,
                       friction: bool) -> None:
@@ -385,31 +422,10 @@ def _solve_velocities(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray,
                 points[p, P_TANGENT_IMPULSE] = new
                 _apply(bodies, a, b, B_VX, lam * tx, lam * ty, rax, ray, rbx, rby)
         if block[k]:
-            p1, p2 = first[k], first[k] + 1
-            dv1x, dv1y = _relative_velocity(bodies, a, b, B_VX, points[p1, P_RA_X], points[p1, P_RA_Y],
-                                            points[p1, P_RB_X], points[p1, P_RB_Y])
-            dv2x, dv2y = _relative_velocity(bodies, a, b, B_VX, points[p2, P_RA_X], points[p2, P_RA_Y],
-                                            points[p2, P_RB_X], points[p2, P_RB_Y])
-            k11, k12, k22 = normals[k, M_K11], normals[k, M_K12], normals[k, M_K22]
-            a1, a2 = points[p1, P_NORMAL_IMPULSE], points[p2, P_NORMAL_IMPULSE]
-            b1 = dv1x * nx + dv1y * ny - (k11 * a1 + k12 * a2)
-            b2 = dv2x * nx + dv2y * ny - (k12 * a1 + k22 * a2)
-            x1, x2 = solve_block(k11, k12, k22, b1, b2, a1, a2)
-            d1, d2 = x1 - a1, x2 - a2
-            points[p1, P_NORMAL_IMPULSE], points[p2, P_NORMAL_IMPULSE] = x1, x2
-            _apply(bodies, a, b, B_VX, d1 * nx, d1 * ny, points[p1, P_RA_X], points[p1, P_RA_Y], points[p1, P_RB_X],
-                   points[p1, P_RB_Y])
-            _apply(bodies, a, b, B_VX, d2 * nx, d2 * ny, points[p2, P_RA_X], points[p2, P_RA_Y], points[p2, P_RB_X],
-                   points[p2, P_RB_Y])
+            _normal_block(bodies, a, b, B_VX, nx, ny, normals[k], points, first[k], P_NORMAL_IMPULSE, 0.0, 0.0)
         else:
             for p in range(first[k], first[k + 1]):
-                rax, ray, rbx, rby = points[p, P_RA_X], points[p, P_RA_Y], points[p, P_RB_X], points[p, P_RB_Y]
-                dvx, dvy = _relative_velocity(bodies, a, b, B_VX, rax, ray, rbx, rby)
-                lam = -points[p, P_NORMAL_MASS] * (dvx * nx + dvy * ny)
-                new = _max(points[p, P_NORMAL_IMPULSE] + lam, 0.0)
-                lam = new - points[p, P_NORMAL_IMPULSE]
-                points[p, P_NORMAL_IMPULSE] = new
-                _apply(bodies, a, b, B_VX, lam * nx, lam * ny, rax, ray, rbx, rby)
+                _normal_point(bodies, a, b, B_VX, nx, ny, points, p, P_NORMAL_IMPULSE, 0.0)
 
 
 @kernel
@@ -426,35 +442,15 @@ def _solve_split(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, firs
             p1, p2 = first[k], first[k] + 1
             t1 = _push_target(points[p1, P_SEP], dt, beta, slop, max_push)
             t2 = _push_target(points[p2, P_SEP], dt, beta, slop, max_push)
-            a1, a2 = points[p1, P_PUSH_IMPULSE], points[p2, P_PUSH_IMPULSE]
-            if t1 == 0.0 and t2 == 0.0 and a1 == 0.0 and a2 == 0.0:
+            if t1 == 0.0 and t2 == 0.0 and points[p1, P_PUSH_IMPULSE] == 0.0 and points[p2, P_PUSH_IMPULSE] == 0.0:
                 continue
-            k11, k12, k22 = normals[k, M_K11], normals[k, M_K12], normals[k, M_K22]
-            dv1x, dv1y = _relative_velocity(bodies, a, b, B_PUSH_X, points[p1, P_RA_X], points[p1, P_RA_Y],
-                                            points[p1, P_RB_X], points[p1, P_RB_Y])
-            dv2x, dv2y = _relative_velocity(bodies, a, b, B_PUSH_X, points[p2, P_RA_X], points[p2, P_RA_Y],
-                                            points[p2, P_RB_X], points[p2, P_RB_Y])
-            b1 = dv1x * nx + dv1y * ny - t1 - (k11 * a1 + k12 * a2)
-            b2 = dv2x * nx + dv2y * ny - t2 - (k12 * a1 + k22 * a2)
-            x1, x2 = solve_block(k11, k12, k22, b1, b2, a1, a2)
-            d1, d2 = x1 - a1, x2 - a2
-            points[p1, P_PUSH_IMPULSE], points[p2, P_PUSH_IMPULSE] = x1, x2
-            _apply(bodies, a, b, B_PUSH_X, d1 * nx, d1 * ny, points[p1, P_RA_X], points[p1, P_RA_Y],
-                   points[p1, P_RB_X], points[p1, P_RB_Y])
-            _apply(bodies, a, b, B_PUSH_X, d2 * nx, d2 * ny, points[p2, P_RA_X], points[p2, P_RA_Y],
-                   points[p2, P_RB_X], points[p2, P_RB_Y])
+            _normal_block(bodies, a, b, B_PUSH_X, nx, ny, normals[k], points, p1, P_PUSH_IMPULSE, t1, t2)
             continue
         for p in range(first[k], first[k + 1]):
             target = _push_target(points[p, P_SEP], dt, beta, slop, max_push)
             if target == 0.0 and points[p, P_PUSH_IMPULSE] == 0.0:
                 continue
-            rax, ray, rbx, rby = points[p, P_RA_X], points[p, P_RA_Y], points[p, P_RB_X], points[p, P_RB_Y]
-            dvx, dvy = _relative_velocity(bodies, a, b, B_PUSH_X, rax, ray, rbx, rby)
-            lam = -points[p, P_NORMAL_MASS] * (dvx * nx + dvy * ny - target)
-            new = _max(points[p, P_PUSH_IMPULSE] + lam, 0.0)
-            lam = new - points[p, P_PUSH_IMPULSE]
-            points[p, P_PUSH_IMPULSE] = new
-            _apply(bodies, a, b, B_PUSH_X, lam * nx, lam * ny, rax, ray, rbx, rby)
+            _normal_point(bodies, a, b, B_PUSH_X, nx, ny, points, p, P_PUSH_IMPULSE, target)
 
 
 @kernel

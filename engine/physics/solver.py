@@ -596,19 +596,18 @@ def solve(manifolds: list[Manifold], knobs: Knobs, dt: float, friction: bool) ->
     manifold_rows: list[tuple[float, ...]] = []
     first = [0]
     points: list[ContactPoint] = []
+
+    def row_of(body: Body) -> int:
+        """The body's row in the packed arrays (each body once, however many manifolds it is in)."""
+        row = index.get(id(body))
+        if row is None:
+            row = index[id(body)] = len(bodies)
+            bodies.append(body)
+        return row
+
     for m in manifolds:
-        body = m.body_a
-        row = index.get(id(body))
-        if row is None:
-            row = index[id(body)] = len(bodies)
-            bodies.append(body)
-        body_a.append(row)
-        body = m.body_b
-        row = index.get(id(body))
-        if row is None:
-            row = index[id(body)] = len(bodies)
-            bodies.append(body)
-        body_b.append(row)
+        body_a.append(row_of(m.body_a))
+        body_b.append(row_of(m.body_b))
         manifold_rows.append((m.nx, m.ny, 0.0, 0.0, 0.0))
         points += m.points
         first.append(len(points))

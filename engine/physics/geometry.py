@@ -40,6 +40,29 @@ class ConvexSet:
         return len(self.first) - 1
 
 
+@dataclass(frozen=True, eq=False)
+class ShapeTable:
+    """Several bodies' convex sets back to back, so one kernel call can treat them all: body k's
+    pieces are pieces[body_first[k]:body_first[k + 1]] of the joined set."""
+
+    pieces: ConvexSet
+    body_first: np.ndarray  # (bodies + 1,) int64
+
+    @classmethod
+    def of(cls, sets: Sequence[ConvexSet]) -> ShapeTable:
+        verts = np.concatenate([s.verts for s in sets]) if sets else np.zeros((0, 2))
+        normals = np.concatenate([s.normals for s in sets]) if sets else np.zeros((0, 2))
+        first, body_first, rows = [0], [0], 0
+        for s in sets:
+            first += (s.first[1:] + rows).tolist()
+            rows += len(s.verts)
+            body_first.append(len(first) - 1)
+        reach = np.concatenate([s.reach for s in sets]) if sets else np.zeros(0)
+        joined = ConvexSet(verts, normals, np.array(first, dtype=np.int64), reach,
+                           np.arange(len(first) - 1, dtype=np.int64))
+        return cls(joined, np.array(body_first, dtype=np.int64))
+
+
 @kernel
 def pose_piece(verts: np.ndarray, normals: np.ndarray, start: int, end: int, x: float, y: float, angle: float,
                out_verts: np.ndarray, out_normals: np.ndarray) -> None:

@@ -74,7 +74,7 @@ def _file(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int
 
 
 @kernel
-def _query(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int, cell_first: np.ndarray,
+def overlapping(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int, cell_first: np.ndarray,
            cell_items: np.ndarray, large: np.ndarray, box: np.ndarray, seen: np.ndarray, out: np.ndarray) -> int:
     """Indices of the boxes overlapping `box` into `out`, ascending; returns how many. `seen` (one
     flag per box, all False) is left all False."""
@@ -117,7 +117,7 @@ def _query_many(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny
     found = np.empty(16, dtype=np.int64)
     total = 0
     for q in range(len(queries)):
-        n = _query(boxes, x0, y0, inv, nx, ny, cell_first, cell_items, large, queries[q], seen, scratch)
+        n = overlapping(boxes, x0, y0, inv, nx, ny, cell_first, cell_items, large, queries[q], seen, scratch)
         while total + n > len(found):
             grown = np.empty(2 * len(found), dtype=np.int64)
             grown[:total] = found[:total]
@@ -174,7 +174,7 @@ class BoxGrid:
         self.cell_first, self.cell_items, self.large = _file(self.boxes, self.x0, self.y0, self.inv, self.nx, self.ny)
         self._seen = np.zeros(len(self.boxes), dtype=np.bool_)
         self._out = np.empty(len(self.boxes), dtype=np.int64)
-        # What a kernel needs to query the grid itself (the arguments of `_query` before `box`).
+        # What a kernel needs to query the grid itself (the arguments of `overlapping` before `box`).
         self.arrays = (self.boxes, self.x0, self.y0, self.inv, self.nx, self.ny, self.cell_first, self.cell_items,
                        self.large)
 
@@ -183,7 +183,7 @@ class BoxGrid:
 
     def query(self, box) -> np.ndarray:
         """Indices of the boxes overlapping `box`, ascending."""
-        count = _query(*self.arrays, np.asarray(box, dtype=np.float64), self._seen, self._out)
+        count = overlapping(*self.arrays, np.asarray(box, dtype=np.float64), self._seen, self._out)
         return self._out[:count].copy()
 
     def query_many(self, queries: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -17,7 +17,8 @@ import math
 
 import numpy as np
 
-from polygolf.engine.physics.geometry import ConvexSet, pose_piece
+from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
+from polygolf.engine.physics.grid import BoxGrid, overlapping
 from polygolf.engine.physics.jit import kernel, warm_up
 from polygolf.engine.physics.settings import GAP_TOLERANCE
 
@@ -167,20 +168,34 @@ def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reac
 
 
 @kernel
-def first_wall_hit(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, x0: float, y0: float,
-                   angle0: float, x1: float, y1: float, angle1: float, wv: np.ndarray, wn: np.ndarray,
-                   wfirst: np.ndarray, walls: np.ndarray, target: float, tolerance: float, allowance: float) -> float:
-    """The earliest impact of any piece of a body moving (x0, y0, angle0) -> (x1, y1, angle1) with
-    any of the wall pieces listed in `walls` (1.0 if none)."""
-    start, end = np.array((x0, y0, angle0)), np.array((x1, y1, angle1))
-    best = 1.0
-    for w in walls:
-        for i in range(len(first) - 1):
-            t = time_of_impact(lv, ln, first[i], first[i + 1], reach[i], start, end, wv, wn, wfirst[w],
-                               wfirst[w + 1], target, tolerance, allowance)
-            if t < best:
-                best = t
-    return best
+def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
+                    which: np.ndarray, motions: np.ndarray, grid: tuple, seen: np.ndarray, found: np.ndarray,
+                    wv: np.ndarray, wn: np.ndarray, wfirst: np.ndarray, target: float, tolerance: float,
+                    allowance: float) -> np.ndarray:
+    """For each moving body q (shape `which[q]` of a `ShapeTable`; motions[q] = x0, y0, angle0, x1,
+    y1, angle1, bounding radius), the earliest impact of any of its pieces with the wall pieces its
+    swept box meets in `grid` (the walls' `BoxGrid.arrays`), as a fraction of its motion (1.0 if
+    none). `seen` and `found`: the grid query's scratch, one row per wall piece."""
+    out = np.ones(len(which))
+    box = np.empty(4)
+    for q in range(len(which)):
+        x0, y0, a0, x1, y1, a1, radius = motions[q]
+        r = radius + target
+        box[0], box[1], box[2], box[3] = min(x0, x1) - r, min(y0, y1) - r, max(x0, x1) + r, max(y0, y1) + r
+        count = overlapping(*grid, box, seen, found)
+        if count == 0:
+            continue
+        start, end = np.array((x0, y0, a0)), np.array((x1, y1, a1))
+        best = 1.0
+        for k in range(count):
+            w = found[k]
+            for i in range(body_first[which[q]], body_first[which[q] + 1]):
+                t = time_of_impact(lv, ln, first[i], first[i + 1], reach[i], start, end, wv, wn, wfirst[w],
+                                   wfirst[w + 1], target, tolerance, allowance)
+                if t < best:
+                    best = t
+        out[q] = best
+    return out
 
 
 @kernel
@@ -269,10 +284,13 @@ def _warm() -> None:
     wall = ConvexSet.of([((2.0, -1.0), (3.0, -1.0), (3.0, 1.0), (2.0, 1.0))],
                         [((0.0, -1.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0))])
     start, end, still = np.array([0.0, 0.0, 0.0]), np.array([2.0, 0.0, 0.5]), np.array([3.0, 3.0, 0.0])
-    walls = np.zeros(1, dtype=np.int64)
     args = (square.verts, square.normals, square.first, square.reach)
-    first_wall_hit(*args, 0.0, 0.0, 0.0, 2.0, 0.0, 0.5, wall.verts, wall.normals, wall.first, walls, 0.005, 0.001,
-                   0.005)
+    table = ShapeTable.of([square, square])
+    grid = BoxGrid(np.array([[2.0, -1.0, 3.0, 1.0]]), 1.0)
+    first_wall_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
+                    table.body_first, np.array([1], dtype=np.int64), np.array([[0.0, 0.0, 0.0, 2.0, 0.0, 0.5, 0.71]]),
+                    grid.arrays, np.zeros(1, dtype=np.bool_), np.empty(1, dtype=np.int64), wall.verts, wall.normals,
+                    wall.first, 0.005, 0.001, 0.005)
     first_pair_hit(*args, start, end, *args, still, still, 0.005, 0.001, 0.005)
     reaches_wall(*args, 0.0, 0.0, 0.0, 2.0, 0.0, 0.5, 1.0 / 240.0, wall.verts, wall.normals, 0, 4)
     pair_reaches(*args, 0.7, start, end, *args, 0.7, still, end, 1.0 / 240.0, 0.01, True, True)

@@ -6,9 +6,10 @@ import numpy as np
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.collide import NO_SEAMS, max_separation
+from polygolf.engine.physics.geometry import ShapeTable
 from polygolf.engine.physics.grid import BoxGrid, box_pairs
 from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP, TOI_TARGET
-from polygolf.engine.physics.toi import first_pair_hit, first_wall_hit
+from polygolf.engine.physics.toi import first_pair_hit, first_wall_hits
 
 
 class CCDProcessor(esper.Processor):
@@ -26,6 +27,17 @@ class CCDProcessor(esper.Processor):
 
     def __init__(self, res: Resources) -> None:
         self.statics, self.stats, self.config = res.statics, res.stats, res.config
+        walls = len(res.statics.grid)
+        self._seen, self._found = np.zeros(walls, dtype=np.bool_), np.empty(walls, dtype=np.int64)
+        self._table: tuple[list, ShapeTable, dict[int, int]] | None = None
+
+    def _shapes(self, bodies: list) -> tuple[ShapeTable, dict[int, int]]:
+        """Every body's pieces in one table, and each entity's row in it; built again only when
+        esper's list of bodies changes (a body or a collider added or taken away)."""
+        if self._table is None or self._table[0] is not bodies:
+            table = ShapeTable.of([col.shape for _, (_, col) in bodies])
+            self._table = (bodies, table, {ent: k for k, (ent, _) in enumerate(bodies)})
+        return self._table[1], self._table[2]
 
     def process(self) -> None:
         bodies = esper.get_components(Body, Collider)
@@ -40,18 +52,18 @@ class CCDProcessor(esper.Processor):
             if body.inv_mass and travel >= LINEAR_SLOP:
                 sweep.append((ent, body, col))
         if sweep and len(self.statics.grid):
-            walls = self.statics.pieces
-            starts, found = self.statics.grid.query_many(_swept(sweep))
-            starts = starts.tolist()
-            for q, (ent, body, col) in enumerate(sweep):
-                if starts[q + 1] > starts[q]:
-                    shape = col.shape
-                    s = body.scratch
-                    t = first_wall_hit(shape.verts, shape.normals, shape.first, shape.reach, s.x0, s.y0, s.angle0,
-                                       body.x, body.y, body.angle, walls.verts, walls.normals, walls.first,
-                                       found[starts[q]:starts[q + 1]], TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP)
-                    if t < 1.0:
-                        first[ent] = t
+            table, rows = self._shapes(bodies)
+            walls, grid = self.statics.pieces, self.statics.grid
+            hits = first_wall_hits(
+                table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
+                np.array([rows[ent] for ent, _, _ in sweep], dtype=np.int64),
+                np.array([(s.x0, s.y0, s.angle0, body.x, body.y, body.angle, col.radius)
+                          for _, body, col in sweep for s in (body.scratch,)], dtype=np.float64),
+                grid.arrays, self._seen, self._found, walls.verts, walls.normals, walls.first, TOI_TARGET,
+                0.25 * LINEAR_SLOP, LINEAR_SLOP)
+            for (ent, _, _), t in zip(sweep, hits.tolist()):
+                if t < 1.0:
+                    first[ent] = t
         # No pair can need sweeping while no body steps half the linear slop.
         if len(bodies) > 1 and longest >= 0.5 * LINEAR_SLOP:
             self._body_hits(bodies, first)

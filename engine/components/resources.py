@@ -12,7 +12,7 @@ import numpy as np
 from polygolf.engine.components.wall import Wall
 from polygolf.engine.physics.body import Body
 from polygolf.engine.physics.contact import Carried, Manifold, persistent_impulses
-from polygolf.engine.physics.geometry import ConvexSet
+from polygolf.engine.physics.geometry import ConvexSet, ShapeTable
 from polygolf.engine.physics.grid import BoxGrid
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import FRAME_DT
@@ -66,6 +66,25 @@ class StaticWorld:
         return cls(pieces=pieces, internal=rows("internal"), hidden=rows("hidden"),
                    owner=np.array([e for e, _, _ in found], dtype=np.int64),
                    index=np.array([k for _, _, k in found], dtype=np.int64), grid=BoxGrid(boxes, cell_size))
+
+
+@dataclass(slots=True)
+class Shapes:
+    """Every body's convex pieces in one table (`geometry.ShapeTable`), so a stage can hand all
+    bodies to one kernel call; built again only when esper's list of bodies changes (a body or a
+    collider added or taken away)."""
+
+    _bodies: list | None = None
+    _table: ShapeTable | None = None
+    _rows: dict[int, int] = field(default_factory=dict)
+
+    def of(self, bodies: list) -> tuple[ShapeTable, dict[int, int]]:
+        """The table for `esper.get_components(Body, Collider)`, and each entity's row in it."""
+        if self._bodies is not bodies or self._table is None:
+            self._table = ShapeTable.of([col.shape for _, (_, col) in bodies])
+            self._rows = {ent: k for k, (ent, _) in enumerate(bodies)}
+            self._bodies = bodies
+        return self._table, self._rows
 
 
 @dataclass(slots=True)
@@ -152,6 +171,7 @@ class Events:
 class Resources:
     config: StepConfig
     statics: StaticWorld
+    shapes: Shapes = field(default_factory=Shapes)
     candidates: Candidates = field(default_factory=Candidates)
     contacts: Contacts = field(default_factory=Contacts)
     stats: Stats = field(default_factory=Stats)

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
 from polygolf.engine.physics.jit import kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
 from polygolf.engine.physics.settings import GAP_TOLERANCE
@@ -29,9 +30,9 @@ _REFERENCE_TOLERANCE = 5e-4
 # At a seam, the wall's face replaces A's as the reference only if it is about as near (m).
 _SEAM_SWITCH = 0.005
 
-# Columns of a contact row written by `collide_convex` / `collide_sets`.
-X, Y, SEP, FEATURE, REF_IS_A, CLIP_X, CLIP_Y, FACE_X, FACE_Y, NX, NY, PIECE_A, PIECE_B = range(13)
-ROW = 13
+# Columns of a contact row written by `collide_convex` / `collide_sets` (BODY: by `bodies_wall_contacts`).
+X, Y, SEP, FEATURE, REF_IS_A, CLIP_X, CLIP_Y, FACE_X, FACE_Y, NX, NY, PIECE_A, PIECE_B, BODY = range(14)
+ROW = 14
 NO_SEAMS = np.zeros(0, dtype=np.bool_)
 
 
@@ -237,6 +238,38 @@ def wall_contacts(va: np.ndarray, na: np.ndarray, shape_verts: np.ndarray, shape
     return kept
 
 
+@kernel
+def bodies_wall_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray,
+                         body_first: np.ndarray, which: np.ndarray, states: np.ndarray, pressed: np.ndarray,
+                         near_first: np.ndarray, near: np.ndarray, walls: tuple, dt: float,
+                         margin: float) -> np.ndarray:
+    """`wall_contacts` for many bodies in one call: body q is shape `which[q]` of a
+    `geometry.ShapeTable` (lv, ln, first, reach, body_first) in state states[q] = (x, y, angle, vx,
+    vy, spin), `pressed[q]`, near the wall pieces near[near_first[q]:near_first[q + 1]]. Returns
+    the rows kept, body by body, each with its q in column BODY."""
+    rows = 0
+    for q in range(len(which)):
+        pieces = body_first[which[q] + 1] - body_first[which[q]]
+        rows += 2 * pieces * (near_first[q + 1] - near_first[q])
+    out = np.empty((rows, ROW))
+    kept = 0
+    for q in range(len(which)):
+        p0, p1 = body_first[which[q]], body_first[which[q] + 1]
+        v0, v1 = first[p0], first[p1]
+        local_first = first[p0:p1 + 1] - v0
+        shape_verts, shape_normals = lv[v0:v1], ln[v0:v1]
+        x, y, angle, vx, vy, spin = states[q]
+        verts, normals = np.empty((v1 - v0, 2)), np.empty((v1 - v0, 2))
+        pose_piece(lv, ln, v0, v1, x, y, angle, verts, normals)
+        made = wall_contacts(verts, normals, shape_verts, shape_normals, local_first, reach[p0:p1], x, y, angle, vx,
+                             vy, spin, dt, pressed[q], walls, near[near_first[q]:near_first[q + 1]], margin,
+                             out[kept:])
+        for k in range(kept, kept + made):
+            out[k, BODY] = q
+        kept += made
+    return out[:kept]
+
+
 # --- the same for callers holding vertex lists (tests, tools) ---------------------------------------
 
 @dataclass(slots=True)
@@ -303,3 +336,8 @@ def _warm() -> None:
                       walls, np.zeros(1, dtype=np.int64), 0.01, np.empty((2, ROW)))
     collide_sets(va, na, first, _rows(lifted), na, first, np.zeros(1, dtype=np.int64), NO_SEAMS, NO_SEAMS, False,
                  0.01, False, np.empty((2, ROW)))
+    table = ShapeTable.of([ConvexSet.of([square], [normals])])
+    bodies_wall_contacts(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
+                         table.body_first, np.zeros(1, dtype=np.int64), np.array([[0.0, 0.0, 0.0, 0.0, 1.0, 0.0]]),
+                         np.zeros(1, dtype=np.bool_), np.array([0, 1], dtype=np.int64), np.zeros(1, dtype=np.int64),
+                         walls, 1.0 / 240.0, 0.01)

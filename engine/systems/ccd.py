@@ -6,7 +6,6 @@ import numpy as np
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.collide import NO_SEAMS, max_separation
-from polygolf.engine.physics.geometry import ShapeTable
 from polygolf.engine.physics.grid import BoxGrid, box_pairs
 from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP, TOI_TARGET
 from polygolf.engine.physics.toi import first_pair_hit, first_wall_hits
@@ -29,15 +28,7 @@ class CCDProcessor(esper.Processor):
         self.statics, self.stats, self.config = res.statics, res.stats, res.config
         walls = len(res.statics.grid)
         self._seen, self._found = np.zeros(walls, dtype=np.bool_), np.empty(walls, dtype=np.int64)
-        self._table: tuple[list, ShapeTable, dict[int, int]] | None = None
-
-    def _shapes(self, bodies: list) -> tuple[ShapeTable, dict[int, int]]:
-        """Every body's pieces in one table, and each entity's row in it; built again only when
-        esper's list of bodies changes (a body or a collider added or taken away)."""
-        if self._table is None or self._table[0] is not bodies:
-            table = ShapeTable.of([col.shape for _, (_, col) in bodies])
-            self._table = (bodies, table, {ent: k for k, (ent, _) in enumerate(bodies)})
-        return self._table[1], self._table[2]
+        self.shapes = res.shapes
 
     def process(self) -> None:
         bodies = esper.get_components(Body, Collider)
@@ -52,7 +43,7 @@ class CCDProcessor(esper.Processor):
             if body.inv_mass and travel >= LINEAR_SLOP:
                 sweep.append((ent, body, col))
         if sweep and len(self.statics.grid):
-            table, rows = self._shapes(bodies)
+            table, rows = self.shapes.of(bodies)
             walls, grid = self.statics.pieces, self.statics.grid
             hits = first_wall_hits(
                 table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,

@@ -1,4 +1,5 @@
 from collections import Counter
+from itertools import accumulate
 
 import esper
 import numpy as np
@@ -6,6 +7,7 @@ import numpy as np
 from polygolf.engine.components import Body, Collider, Wall
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.collide import (
+    BODY,
     FEATURE,
     NO_SEAMS,
     NX,
@@ -14,8 +16,8 @@ from polygolf.engine.physics.collide import (
     PIECE_B,
     ROW,
     SEP,
+    bodies_wall_contacts,
     collide_sets,
-    wall_contacts,
 )
 from polygolf.engine.physics.contact import Manifold, add_manifolds, combine, contact_points, make_point
 from polygolf.engine.physics.settings import CONTACT_MARGIN, GAP_TOLERANCE
@@ -37,13 +39,8 @@ class NarrowphaseProcessor(esper.Processor):
     def __init__(self, res: Resources) -> None:
         self.config, self.candidates, self.contacts = res.config, res.candidates, res.contacts
         self.statics, self.stats = res.statics, res.stats
-        self._out = np.empty((64, ROW))
-
-    def _buffer(self, rows: int) -> np.ndarray:
-        """Room for `rows` contact rows, kept from one call to the next."""
-        if len(self._out) < rows:
-            self._out = np.empty((max(rows, 2 * len(self._out)), ROW))
-        return self._out
+        self.shapes = res.shapes
+        self._owner, self._index = res.statics.owner.tolist(), res.statics.index.tolist()  # fixed once built
 
     def process(self) -> None:
         carried = self.contacts.carried() if self.config.knobs.warm_start else {}
@@ -83,28 +80,38 @@ class NarrowphaseProcessor(esper.Processor):
                     gapped[k], grew = False, True
                     pressed |= {ea, eb}
 
-        walls = self.statics.arrays
-        for ent, found in self.candidates.walls.items():
-            body, col = esper.component_for_entity(ent, Body), esper.component_for_entity(ent, Collider)
-            verts, normals = col.posed(body.x, body.y, body.angle)
-            shape = col.shape
-            out = self._buffer(2 * len(shape) * len(found))
-            count = wall_contacts(verts, normals, shape.verts, shape.normals, shape.first, shape.reach, body.x, body.y,
-                                  body.angle, body.vx, body.vy, body.spin, dt, ent in pressed, walls, found,
-                                  CONTACT_MARGIN, out)
-            kept = out[:count].tolist()
-            if kept:
-                owner, index = self.statics.owner, self.statics.index
+        near_walls = self.candidates.walls
+        if near_walls:
+            table, table_rows = self.shapes.of(esper.get_components(Body, Collider))
+            ents = list(near_walls)
+            bodies = [esper.component_for_entity(ent, Body) for ent in ents]
+            near_first = np.array([0, *accumulate(len(found) for found in near_walls.values())], dtype=np.int64)
+            rows = bodies_wall_contacts(
+                table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
+                np.array([table_rows[ent] for ent in ents], dtype=np.int64),
+                np.array([(b.x, b.y, b.angle, b.vx, b.vy, b.spin) for b in bodies], dtype=np.float64).reshape(-1, 6),
+                np.array([ent in pressed for ent in ents], dtype=np.bool_), near_first,
+                np.concatenate(list(near_walls.values())), self.statics.arrays, dt, CONTACT_MARGIN).tolist()
+            owner, index = self._owner, self._index
+            k = 0
+            while k < len(rows):  # body by body
+                q = rows[k][BODY]
+                end = k + 1
+                while end < len(rows) and rows[end][BODY] == q:
+                    end += 1
+                ent, body = ents[int(q)], bodies[int(q)]
+                col = esper.component_for_entity(ent, Collider)
                 materials = {}
                 raw = []
-                for row in kept:
+                for row in rows[k:end]:
                     g = int(row[PIECE_B])
-                    wall_ent = int(owner[g])
+                    wall_ent = owner[g]
                     if wall_ent not in materials:
                         materials[wall_ent] = combine(col.material, esper.component_for_entity(wall_ent, Wall).material)
-                    key = (wall_ent, int(index[g]), int(row[PIECE_A]), int(row[FEATURE]))
+                    key = (wall_ent, index[g], int(row[PIECE_A]), int(row[FEATURE]))
                     raw.append((row[NX], row[NY], make_point(row, key, body, static, materials[wall_ent], ngs)))
                 deepest = max(deepest, add_manifolds(manifolds, raw, ent, -1, body, static, carried))
+                k = end
 
         for (ea, eb, a, b, rows), gap, (col_a, col_b, _) in zip(pairs, gapped, near):
             if gap:

@@ -1,5 +1,5 @@
 from collections import Counter
-from itertools import accumulate
+from itertools import accumulate, groupby
 
 import esper
 import numpy as np
@@ -30,7 +30,7 @@ class NarrowphaseProcessor(esper.Processor):
     for warm starting. Reads the candidates; writes the contacts and the deepest overlap.
 
     A contact with a gap acts only if the bodies, moving on as they are, would close that gap within
-    the substep (`toi.reaches`, `toi.pair_reaches`): a ball passing a corner or another ball it never
+    the substep (`collide.wall_contacts`, `toi.pair_reaches`): a ball passing a corner or another ball it never
     touches is never hit, and a body above a floor or another body falls until it touches instead of
     hovering on the contact margin."""
 
@@ -93,17 +93,12 @@ class NarrowphaseProcessor(esper.Processor):
                 np.array([ent in pressed for ent in ents], dtype=np.bool_), near_first,
                 np.concatenate(list(near_walls.values())), self.statics.arrays, dt, CONTACT_MARGIN).tolist()
             owner, index = self._owner, self._index
-            k = 0
-            while k < len(rows):  # body by body
-                q = rows[k][BODY]
-                end = k + 1
-                while end < len(rows) and rows[end][BODY] == q:
-                    end += 1
-                ent, body = ents[int(q)], bodies[int(q)]
+            for q, kept in groupby(rows, key=lambda row: int(row[BODY])):  # body by body
+                ent, body = ents[q], bodies[q]
                 col = esper.component_for_entity(ent, Collider)
                 materials = {}
                 raw = []
-                for row in rows[k:end]:
+                for row in kept:
                     g = int(row[PIECE_B])
                     wall_ent = owner[g]
                     if wall_ent not in materials:
@@ -111,7 +106,6 @@ class NarrowphaseProcessor(esper.Processor):
                     key = (wall_ent, index[g], int(row[PIECE_A]), int(row[FEATURE]))
                     raw.append((row[NX], row[NY], make_point(row, key, body, static, materials[wall_ent], ngs)))
                 deepest = max(deepest, add_manifolds(manifolds, raw, ent, -1, body, static, carried))
-                k = end
 
         for (ea, eb, a, b, rows), gap, (col_a, col_b, _) in zip(pairs, gapped, near):
             if gap:

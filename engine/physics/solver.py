@@ -37,10 +37,8 @@ from polygolf.engine.physics.settings import BLOCK_MAX_CONDITION, LINEAR_SLOP, M
 # and its pseudo-velocity are three columns each in the same order, so one function serves both.
 B_X, B_Y, B_ANGLE, B_VX, B_VY, B_SPIN, B_MASS, B_INERTIA, B_INV_MASS, B_INV_INERTIA, B_PUSH_X, B_PUSH_Y, \
     B_PUSH_SPIN = range(13)
-BODY_COLUMNS = 13
 # Columns of a manifold row: its normal and its block matrix (filled for two-point manifolds).
 M_NX, M_NY, M_K11, M_K12, M_K22 = range(5)
-MANIFOLD_COLUMNS = 5
 # Columns of a point row: what the narrowphase made (P_X..P_FRICTION), the solver's state
 # (P_NORMAL_IMPULSE..P_APPROACH, written back to the point) and the local geometry NGS reads.
 P_X, P_Y, P_SEP, P_FRICTION, P_NORMAL_IMPULSE, P_TANGENT_IMPULSE, P_PUSH_IMPULSE, P_RA_X, P_RA_Y, P_RB_X, P_RB_Y, \

@@ -134,3 +134,6 @@ class GolferProcess:
                 process.terminate()
         for process in processes:
             process.join(timeout=1.0)
+            if process.is_alive():  # SIGTERM not acted on in time (a loaded machine): no second chance
+                process.kill()
+                process.join(timeout=1.0)

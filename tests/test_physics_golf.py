@@ -14,7 +14,7 @@ from hypothesis import strategies as st
 
 from polygolf.engine.loading.scene import Scene, build_scene
 from polygolf.engine.physics.settings import LINEAR_SLOP
-from polygolf.engine.systems.drag import decay
+from polygolf.engine.physics.motion import decay
 
 from .conftest import PRESET_NAMES
 from .helpers import scene_sim

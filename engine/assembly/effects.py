@@ -48,13 +48,16 @@ def derive_effects(spec: WorldSpec, substeps: int) -> dict[str, str]:
 
 
 def _best_product(spec: WorldSpec, key: str) -> str | None:
-    """The largest body x wall (or body x body) coefficient, described, or None if every one is zero."""
+    """The largest body x wall (or body x body, where bodies meet) coefficient, described, or None if
+    every one is zero."""
     best, text = 0.0, None
     others = [(getattr(w.material, key), "wall") for w in spec.walls]
     others += [(getattr(k.material, key), k.name) for k in spec.kinematic]
     for body in spec.bodies:
         own = getattr(body.material, key)
-        for value, name in others + [(getattr(o.material, key), o.name) for o in spec.bodies if o is not body]:
+        bodies = [(getattr(o.material, key), o.name) for o in spec.bodies if o is not body] if spec.collide_bodies \
+            else []  # bodies that never meet have no product
+        for value, name in others + bodies:
             if own * value > best:
                 best, text = own * value, f"{body.name} {key} {own:g} x {name} {value:g}"
     return text

@@ -11,6 +11,7 @@ import esper
 
 from polygolf.engine.components import Body
 from polygolf.engine.components.resources import Resources
+from polygolf.engine.physics.motion import kinetic_energy
 from polygolf.engine.physics.presets import Knobs
 
 
@@ -89,13 +90,9 @@ class Simulation:
 
     def _measure(self) -> None:
         metrics = self.metrics
-        energy = 0.0
-        for _, body in esper.get_component(Body):
-            e = body.kinetic_energy()
-            if not math.isfinite(e) or not (math.isfinite(body.x) and math.isfinite(body.y)
-                                             and math.isfinite(body.angle)):
-                metrics.nan = True
-            energy += e
+        energy, finite = kinetic_energy(self.res.bodies.gather(esper.get_component(Body)))
+        if not finite:
+            metrics.nan = True
         if energy - metrics.final_energy > metrics.max_energy_rise:
             metrics.max_energy_rise = energy - metrics.final_energy
         metrics.final_energy = energy
@@ -119,7 +116,7 @@ class Simulation:
 
     def kinetic_energy(self) -> float:
         esper.switch_world(self.world)
-        return sum(body.kinetic_energy() for _, body in esper.get_component(Body))
+        return kinetic_energy(self.res.bodies.gather(esper.get_component(Body)))[0]
 
     def body(self, name: str) -> Body:
         esper.switch_world(self.world)

@@ -14,4 +14,3 @@ class Drag:
     angular: float = 0.0
     rolling: float = 0.0
     rolling_angular: float = 0.0
-    scale: float = 1.0  # set each substep by the surface under the body (sand, ice); reset after use

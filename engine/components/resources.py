@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from polygolf.engine.components.wall import Wall
-from polygolf.engine.physics.body import Body
+from polygolf.engine.physics.body import Body, BodyStore, Selection
 from polygolf.engine.physics.contact import Carried, Manifold, persistent_impulses
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable
 from polygolf.engine.physics.grid import BoxGrid
@@ -71,29 +71,65 @@ class StaticWorld:
 @dataclass(slots=True)
 class Shapes:
     """Every body's convex pieces in one table (`geometry.ShapeTable`), so a stage can hand all
-    bodies to one kernel call; built again only when esper's list of bodies changes (a body or a
-    collider added or taken away)."""
+    bodies to one kernel call, with each one's entity, bounding radius and thinnest width; built
+    again only when esper's list of bodies changes (a body or a collider added or taken away)."""
 
     _bodies: list | None = None
     _table: ShapeTable | None = None
     _rows: dict[int, int] = field(default_factory=dict)
+    ents: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+    radius: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    thickness: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    _selection: Selection = field(default_factory=Selection)
+    _lookup: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+
+    def index(self, ents: np.ndarray) -> np.ndarray:
+        """The rows (as `of` gives them) of these entities, each of which has a body and a collider."""
+        return self._lookup[ents]
 
     def of(self, bodies: list) -> tuple[ShapeTable, dict[int, int]]:
         """The table for `esper.get_components(Body, Collider)`, and each entity's row in it."""
         if self._bodies is not bodies or self._table is None:
             self._table = ShapeTable.of([col.shape for _, (_, col) in bodies])
             self._rows = {ent: k for k, (ent, _) in enumerate(bodies)}
+            self.ents = np.array([ent for ent, _ in bodies], dtype=np.int64)
+            self.radius = np.array([col.radius for _, (_, col) in bodies], dtype=np.float64)
+            self.thickness = np.array([col.thickness for _, (_, col) in bodies], dtype=np.float64)
+            self._lookup = np.full(int(self.ents.max(initial=-1)) + 1, -1, dtype=np.int64)
+            self._lookup[self.ents] = np.arange(len(self.ents))
             self._bodies = bodies
         return self._table, self._rows
+
+    def rows(self, store: BodyStore, bodies: list) -> np.ndarray:
+        """Each body's row in the store (gathered for this substep), in the order of `bodies` (as `of`)."""
+        self.of(bodies)
+        return self._selection.of(store, bodies)
 
 
 @dataclass(slots=True)
 class Candidates:
-    """Broadphase -> narrowphase: body entity -> the wall pieces near it (rows of the static world's
-    pieces, ascending), and body pairs."""
+    """Broadphase -> narrowphase: the bodies with wall pieces near them (`near`: entities) and those
+    pieces (rows of the static world's pieces, ascending; body k's are
+    `near_found[near_first[k]:near_first[k + 1]]`), and body pairs. `walls` gives the same as a
+    dict, entity -> pieces."""
 
-    walls: dict[int, np.ndarray] = field(default_factory=dict)
+    near: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+    near_first: np.ndarray = field(default_factory=lambda: np.zeros(1, dtype=np.int64))
+    near_found: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
     pairs: list[tuple[int, int]] = field(default_factory=list)
+
+    @property
+    def walls(self) -> dict[int, np.ndarray]:
+        first = self.near_first.tolist()
+        return {ent: self.near_found[first[k]:first[k + 1]] for k, ent in enumerate(self.near.tolist())}
+
+    @walls.setter
+    def walls(self, walls: dict[int, np.ndarray]) -> None:
+        self.near = np.array(list(walls), dtype=np.int64)
+        self.near_first = np.zeros(len(walls) + 1, dtype=np.int64)
+        self.near_first[1:] = np.cumsum([len(found) for found in walls.values()])
+        self.near_found = (np.concatenate([np.asarray(f, dtype=np.int64) for f in walls.values()]) if walls
+                           else np.zeros(0, dtype=np.int64))
 
 
 @dataclass(slots=True)
@@ -171,6 +207,7 @@ class Events:
 class Resources:
     config: StepConfig
     statics: StaticWorld
+    bodies: BodyStore = field(default_factory=BodyStore)
     shapes: Shapes = field(default_factory=Shapes)
     candidates: Candidates = field(default_factory=Candidates)
     contacts: Contacts = field(default_factory=Contacts)

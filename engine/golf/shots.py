@@ -10,6 +10,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 
 import esper
+import numpy as np
 
 from polygolf.engine.assembly.assemble import assemble
 from polygolf.engine.assembly.spec import WallPart
@@ -17,6 +18,7 @@ from polygolf.engine.components import Ball, Body, HoleState, Material, ShotInpu
 from polygolf.engine.golf.holes import Hole
 from polygolf.engine.golf.world import hole_spec
 from polygolf.engine.loading.scene import ShapeSpec
+from polygolf.engine.physics.body import ASLEEP, Selection, X, Y
 from polygolf.engine.physics.polygon import Outline
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import FRAME_DT
@@ -83,9 +85,10 @@ def simulate_shots(hole: Hole, shape: ShapeSpec, shots: list[Shot], knobs: Knobs
         contact: list[int | None] = [None] * len(shots)
         contact_at: list[tuple[float, float] | None] = [None] * len(shots)
         index = {ent: k for k, (ent, _) in enumerate(rows)}
+        balls, running = Selection(), np.ones(len(shots), dtype=np.bool_)
         frames = 0
         sim.res.events.drain()
-        while frames < round(max_seconds / FRAME_DT) and None in done:
+        while frames < round(max_seconds / FRAME_DT) and running.any():
             sim.step(1, measure=False)
             frames += 1
             if path or until_contact:
@@ -94,11 +97,17 @@ def simulate_shots(hole: Hole, shape: ShapeSpec, shots: list[Shot], knobs: Knobs
                         k = index.get(ent)
                         if k is not None and contact[k] is None and done[k] is None:
                             contact[k], contact_at[k] = frames - 1, (impact.x, impact.y)
-            for k, (_, (body, _, state)) in enumerate(rows):
-                if path and done[k] is None:
-                    paths[k].append((body.x, body.y))
-                if done[k] is None and (state.holed or body.asleep or (until_contact and contact[k] is not None)):
-                    done[k] = frames * FRAME_DT
+            state = sim.res.bodies.gather(esper.get_component(Body))[balls.of(sim.res.bodies, rows)]
+            if path:
+                for k, x, y in zip(np.flatnonzero(running).tolist(), *state[running][:, [X, Y]].T.tolist()):
+                    paths[k].append((x, y))
+            # A holed ball rests in the cup, so resting covers it.
+            ended = running & (state[:, ASLEEP] != 0.0)
+            if until_contact:
+                ended |= running & np.array([c is not None for c in contact], dtype=np.bool_)
+            for k in np.flatnonzero(ended).tolist():
+                done[k] = frames * FRAME_DT
+            running &= ~ended
         return [ShotResult(rest=(body.x, body.y), angle=body.angle, holed=state.holed,
                            seconds=done[k] if done[k] is not None else frames * FRAME_DT,
                            penalties=state.penalties, path=paths[k], contact=contact[k], contact_at=contact_at[k])

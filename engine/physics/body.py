@@ -1,10 +1,28 @@
 """A rigid body's simulated state, kept apart from the solver's scratch (as Box2D v3 keeps b2BodySim
 apart from b2BodyState): what a body *is* and where it is on one side, what a substep leaves behind
-for the next stage on the other."""
+for the next stage on the other.
+
+The state lives in arrays, one row a body (structure of arrays, `COLUMNS`), so a kernel can step
+every body of a world in one call. A `Body` is a handle on its row: `body.x` reads and writes the
+array. A body made on its own has a row of its own; `BodyStore.gather` moves the bodies of a world
+into one array, row for row, and points each handle at its new row.
+"""
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+# The columns of a body row. The first thirteen are the contact solver's row (`solver.B_*`), in its
+# order: pose, velocity, mass properties, split-impulse pseudo-velocity.
+COLUMNS = ("x", "y", "angle", "vx", "vy", "spin", "mass", "inertia", "inv_mass", "inv_inertia",
+           "push_x", "push_y", "push_spin", "asleep", "still_time", "x0", "y0", "angle0", "lag", "moved_for",
+           "drag_scale")
+(X, Y, ANGLE, VX, VY, SPIN, MASS, INERTIA, INV_MASS, INV_INERTIA, PUSH_X, PUSH_Y, PUSH_SPIN, ASLEEP, STILL_TIME,
+ X0, Y0, ANGLE0, LAG, MOVED_FOR, DRAG_SCALE) = range(len(COLUMNS))
+SOLVER_COLUMNS = PUSH_SPIN + 1
 
 
 @dataclass(slots=True)
@@ -15,44 +33,70 @@ class Material:
     friction: float = 1.0
 
 
-@dataclass(slots=True)
-class BodyScratch:
+def _column(col: int, doc: str) -> property:
+    def get(self: _Row) -> float:
+        return self._row.item(col)
+
+    def put(self: _Row, value: float) -> None:
+        self._row[col] = value
+
+    return property(get, put, doc=doc)
+
+
+class _Row:
+    __slots__ = ("_row",)
+
+    def __init__(self, row: np.ndarray) -> None:
+        self._row = row
+
+
+class BodyScratch(_Row):
     """Working values of one substep's stages; never part of the body's physical state."""
 
-    still_time: float = 0.0  # seconds spent below the rest thresholds
+    __slots__ = ()
+    still_time = _column(STILL_TIME, "seconds spent below the rest thresholds")
     # Pose at the start of the substep, for continuous collision and rest detection.
-    x0: float = 0.0
-    y0: float = 0.0
-    angle0: float = 0.0
-    # Time continuous collision cut from the last substep's motion (s), made up in the next one;
-    # and how long the last substep's motion lasted (dt, plus any lag made up).
-    lag: float = 0.0
-    moved_for: float = 0.0
+    x0 = _column(X0, "x at the start of the substep")
+    y0 = _column(Y0, "y at the start of the substep")
+    angle0 = _column(ANGLE0, "angle at the start of the substep")
+    lag = _column(LAG, "time continuous collision cut from the last substep's motion (s), made up in the next")
+    moved_for = _column(MOVED_FOR, "how long the last substep's motion lasted (dt, plus any lag made up)")
     # Pseudo-velocities of split-impulse position correction; never part of the kinetic energy.
-    push_x: float = 0.0
-    push_y: float = 0.0
-    push_spin: float = 0.0
+    push_x = _column(PUSH_X, "split-impulse pseudo-velocity, x")
+    push_y = _column(PUSH_Y, "split-impulse pseudo-velocity, y")
+    push_spin = _column(PUSH_SPIN, "split-impulse pseudo-velocity, angular")
+    drag_scale = _column(DRAG_SCALE, "the surface under the body (sand, ice) scales its drag this substep by this")
 
 
-@dataclass(slots=True)
-class Body:
+class Body(_Row):
     """Rigid-body state about the centroid. Static and kinematic bodies have zero inverse mass."""
 
-    x: float
-    y: float
-    angle: float = 0.0  # radians, counter-clockwise
-    vx: float = 0.0
-    vy: float = 0.0
-    spin: float = 0.0  # rad/s, counter-clockwise
-    mass: float = 0.0
-    inertia: float = 0.0
-    inv_mass: float = 0.0
-    inv_inertia: float = 0.0
-    asleep: bool = False
-    scratch: BodyScratch = field(default_factory=BodyScratch)
+    __slots__ = ("scratch",)
+    x = _column(X, "m")
+    y = _column(Y, "m")
+    angle = _column(ANGLE, "radians, counter-clockwise")
+    vx = _column(VX, "m/s")
+    vy = _column(VY, "m/s")
+    spin = _column(SPIN, "rad/s, counter-clockwise")
+    mass = _column(MASS, "kg")
+    inertia = _column(INERTIA, "kg m² about the centroid")
+    inv_mass = _column(INV_MASS, "1/kg; zero: nothing moves it")
+    inv_inertia = _column(INV_INERTIA, "zero: nothing turns it")
 
-    def __post_init__(self) -> None:
+    def __init__(self, x: float, y: float, angle: float = 0.0, vx: float = 0.0, vy: float = 0.0, spin: float = 0.0,
+                 mass: float = 0.0, inertia: float = 0.0, inv_mass: float = 0.0, inv_inertia: float = 0.0,
+                 asleep: bool = False) -> None:
+        row = np.zeros(len(COLUMNS))
+        row[:INV_INERTIA + 1] = x, y, angle, vx, vy, spin, mass, inertia, inv_mass, inv_inertia
+        row[ASLEEP] = asleep
+        row[DRAG_SCALE] = 1.0
+        self._point(row)
         self.mark_start()
+
+    def _point(self, row: np.ndarray) -> None:
+        """Make this handle (and its scratch) read and write `row`."""
+        self._row = row
+        self.scratch = BodyScratch(row)
 
     @classmethod
     def dynamic(cls, x: float, y: float, mass: float, inertia: float, **state: float) -> Body:
@@ -60,23 +104,74 @@ class Body:
                    inv_inertia=1.0 / inertia if inertia > 0.0 else 0.0, **state)
 
     @property
+    def asleep(self) -> bool:
+        return self._row.item(ASLEEP) != 0.0
+
+    @asleep.setter
+    def asleep(self, value: bool) -> None:
+        self._row[ASLEEP] = bool(value)
+
+    @property
     def is_dynamic(self) -> bool:
         return self.inv_mass > 0.0
 
     def kinetic_energy(self) -> float:
-        return 0.5 * (self.mass * (self.vx * self.vx + self.vy * self.vy) + self.inertia * self.spin * self.spin) \
-            if self.inv_mass > 0.0 else 0.0
+        x, y, angle, vx, vy, spin, mass, inertia, inv_mass = self._row[:INV_MASS + 1].tolist()
+        return 0.5 * (mass * (vx * vx + vy * vy) + inertia * spin * spin) if inv_mass > 0.0 else 0.0
 
     def mark_start(self) -> None:
         """The pose now is where this substep's motion starts."""
-        self.scratch.x0, self.scratch.y0, self.scratch.angle0 = self.x, self.y, self.angle
+        self._row[X0:ANGLE0 + 1] = self._row[X:ANGLE + 1]
 
     def wake(self) -> None:
-        self.asleep = False
-        self.scratch.still_time = 0.0
+        self._row[ASLEEP] = 0.0
+        self._row[STILL_TIME] = 0.0
 
     def rest(self) -> None:
         """Put to rest where it is: no velocity, no motion owed."""
-        self.asleep = True
-        self.vx = self.vy = self.spin = 0.0
+        self._row[ASLEEP] = 1.0
+        self._row[VX:SPIN + 1] = 0.0
         self.mark_start()
+
+    def __repr__(self) -> str:
+        return f"Body({', '.join(f'{name}={value!r}' for name, value in zip(COLUMNS, self._row.tolist()))})"
+
+
+class BodyStore:
+    """The bodies of one world as one array (`state`, a row a body, `COLUMNS`), in the order of
+    esper's list of bodies; gathered again only when that list changes (a body added or taken
+    away). Handles of bodies that leave keep their last values in the array left behind."""
+
+    __slots__ = ("_bodies", "state", "rows")
+
+    def __init__(self) -> None:
+        self._bodies: list | None = None
+        self.state = np.zeros((0, len(COLUMNS)))
+        self.rows: dict[int, int] = {}  # entity -> row
+
+    def gather(self, bodies: Sequence[tuple[int, Body]]) -> np.ndarray:
+        """The state array for `esper.get_component(Body)`, rows in that list's order."""
+        if bodies is not self._bodies:
+            state = np.array([body._row for _, body in bodies], dtype=np.float64).reshape(-1, len(COLUMNS))
+            for k, (_, body) in enumerate(bodies):
+                body._point(state[k])
+            self.state, self.rows, self._bodies = state, {ent: k for k, (ent, _) in enumerate(bodies)}, bodies
+        return self.state
+
+
+class Selection:
+    """The rows (in a `BodyStore`) of the bodies an esper query found, e.g. those with a `Drag`;
+    worked out again only when esper's list or the store's array changes."""
+
+    __slots__ = ("_found", "_state", "rows")
+
+    def __init__(self) -> None:
+        self._found: list | None = None
+        self._state: np.ndarray | None = None
+        self.rows = np.zeros(0, dtype=np.int64)
+
+    def of(self, store: BodyStore, found: Sequence[tuple[int, object]]) -> np.ndarray:
+        if found is not self._found or store.state is not self._state:
+            self.rows = np.array([store.rows[ent] for ent, _ in found], dtype=np.int64)
+            self._found, self._state = found, store.state
+        return self.rows

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from polygolf.engine.physics.body import ASLEEP, COLUMNS, X, Y
 from polygolf.engine.physics.jit import kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
 
@@ -85,8 +86,62 @@ def pose_set(verts: np.ndarray, normals: np.ndarray, x: float, y: float, angle: 
     pose_piece(verts, normals, 0, verts.shape[0], x, y, angle, out_verts, out_normals)
 
 
+@dataclass(frozen=True, eq=False)
+class Areas:
+    """Simple polygons (areas of a green: sand, water, a slope) back to back: area a has vertices
+    `verts[first[a]:first[a + 1]]` and bounding box `boxes[a]` (x0, y0, x1, y1)."""
+
+    verts: np.ndarray  # (n, 2) float64
+    first: np.ndarray  # (areas + 1,) int64
+    boxes: np.ndarray  # (areas, 4) float64
+
+    @classmethod
+    def of(cls, outlines: Sequence[Sequence[Vec]], boxes: Sequence[Sequence[float]]) -> Areas:
+        first = np.zeros(len(outlines) + 1, dtype=np.int64)
+        first[1:] = np.cumsum([len(o) for o in outlines])
+        verts = np.array([v for o in outlines for v in o], dtype=np.float64).reshape(-1, 2)
+        return cls(verts, first, np.array(boxes, dtype=np.float64).reshape(-1, 4))
+
+
+@kernel
+def inside(verts: np.ndarray, start: int, end: int, x: float, y: float) -> bool:
+    """Whether (x, y) is inside the simple polygon of rows start..end (even-odd ray crossing, as
+    `polygon.contains`)."""
+    result = False
+    n = end - start
+    for i in range(n):
+        ax, ay = verts[start + i, 0], verts[start + i, 1]
+        j = start + (i + 1) % n
+        bx, by = verts[j, 0], verts[j, 1]
+        if (ay > y) != (by > y) and x < ax + (y - ay) * (bx - ax) / (by - ay):
+            result = not result
+    return result
+
+
+@kernel
+def first_area(state: np.ndarray, rows: np.ndarray, verts: np.ndarray, first: np.ndarray, boxes: np.ndarray,
+               out: np.ndarray) -> None:
+    """For each awake body of `rows` (a `body.BodyStore` state), the first area that holds its
+    centre, or -1 (also for a body at rest)."""
+    for q in range(rows.shape[0]):
+        k = rows[q]
+        out[q] = -1
+        if state[k, ASLEEP] != 0.0:
+            continue
+        x, y = state[k, X], state[k, Y]
+        for a in range(boxes.shape[0]):
+            if (boxes[a, 0] <= x <= boxes[a, 2] and boxes[a, 1] <= y <= boxes[a, 3]
+                    and inside(verts, first[a], first[a + 1], x, y)):
+                out[q] = a
+                break
+
+
 @warm_up("shapes")
 def _warm() -> None:
+    area = Areas.of([((0.0, 0.0), (1.0, 0.0), (0.0, 1.0))], [(0.0, 0.0, 1.0, 1.0)])
+    state = np.zeros((1, len(COLUMNS)))
+    state[0, X] = state[0, Y] = 0.25
+    first_area(state, np.zeros(1, dtype=np.int64), area.verts, area.first, area.boxes, np.empty(1, dtype=np.int64))
     square = ConvexSet.of([((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))],
                           [((0.7, 0.7), (-0.7, 0.7), (-0.7, -0.7), (0.7, -0.7))])
     out_v, out_n = np.empty_like(square.verts), np.empty_like(square.normals)

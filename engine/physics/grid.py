@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from polygolf.engine.physics.body import ASLEEP, COLUMNS, INV_MASS, X, Y
 from polygolf.engine.physics.jit import kernel, warm_up
 
 MAX_CELLS = 256  # cells one box may be filed under
@@ -129,6 +130,41 @@ def _query_many(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny
 
 
 @kernel
+def bodies_near(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, margin: float, boxes: np.ndarray, x0: float,
+                y0: float, inv: float, nx: int, ny: int, cell_first: np.ndarray, cell_items: np.ndarray,
+                large: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """For the awake dynamic bodies among `rows` of a `body.BodyStore` state (bounding radii
+    `radius`, grown by `margin`), the grid's boxes each one's box overlaps: (near, first, found),
+    `near` the bodies (indices into `rows`) that have any, their boxes in compressed rows."""
+    seen = np.zeros(len(boxes), dtype=np.bool_)
+    scratch = np.empty(len(boxes), dtype=np.int64)
+    near = np.empty(len(rows), dtype=np.int64)
+    first = np.zeros(len(rows) + 1, dtype=np.int64)
+    found = np.empty(16, dtype=np.int64)
+    box = np.empty(4)
+    bodies, total = 0, 0
+    for q in range(len(rows)):
+        k = rows[q]
+        if state[k, ASLEEP] != 0.0 or state[k, INV_MASS] == 0.0:
+            continue
+        r = radius[q] + margin
+        box[0], box[1], box[2], box[3] = state[k, X] - r, state[k, Y] - r, state[k, X] + r, state[k, Y] + r
+        n = overlapping(boxes, x0, y0, inv, nx, ny, cell_first, cell_items, large, box, seen, scratch)
+        if n == 0:
+            continue
+        while total + n > len(found):
+            grown = np.empty(2 * len(found), dtype=np.int64)
+            grown[:total] = found[:total]
+            found = grown
+        found[total:total + n] = scratch[:n]
+        total += n
+        near[bodies] = q
+        bodies += 1
+        first[bodies] = total
+    return near[:bodies].copy(), first[:bodies + 1].copy(), found[:total].copy()
+
+
+@kernel
 def box_pairs(boxes: np.ndarray, active: np.ndarray) -> np.ndarray:
     """Every pair (i, j), i < j, of overlapping boxes of which at least one is `active`, sorted:
     a sweep along x."""
@@ -198,4 +234,7 @@ def _warm() -> None:
     grid = BoxGrid(boxes, 1.0)
     grid.query((0.2, 0.2, 0.6, 0.6))
     grid.query_many(boxes)
+    state = np.zeros((1, len(COLUMNS)))
+    state[0, INV_MASS] = 1.0
+    bodies_near(state, np.zeros(1, dtype=np.int64), np.ones(1), 0.01, *grid.arrays)
     box_pairs(boxes, np.ones(3, dtype=np.bool_))

@@ -51,6 +51,7 @@ def warm_up(label: str) -> Callable[[Callable[[], None]], Callable[[], None]]:
 # Every module that defines kernels, in the order a first launch compiles them.
 KERNEL_MODULES = (
     "polygolf.engine.physics.geometry",
+    "polygolf.engine.physics.motion",
     "polygolf.engine.physics.collide",
     "polygolf.engine.physics.toi",
     "polygolf.engine.physics.grid",

@@ -27,16 +27,19 @@ import math
 
 import numpy as np
 
-from polygolf.engine.physics.body import Body
+from polygolf.engine.physics import body
+from polygolf.engine.physics.body import SOLVER_COLUMNS, Body
 from polygolf.engine.physics.contact import ContactPoint, Manifold
 from polygolf.engine.physics.jit import kernel, warm_up
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import BLOCK_MAX_CONDITION, LINEAR_SLOP, MAX_CORRECTION, POSITION_BETA
 
-# Columns of a body row: pose, velocity, mass properties, split-impulse pseudo-velocity. A velocity
-# and its pseudo-velocity are three columns each in the same order, so one function serves both.
+# Columns of a body row: pose, velocity, mass properties, split-impulse pseudo-velocity (the first
+# SOLVER_COLUMNS of a `body.BodyStore` row). A velocity and its pseudo-velocity are three columns
+# each in the same order, so one function serves both.
 B_X, B_Y, B_ANGLE, B_VX, B_VY, B_SPIN, B_MASS, B_INERTIA, B_INV_MASS, B_INV_INERTIA, B_PUSH_X, B_PUSH_Y, \
-    B_PUSH_SPIN = range(13)
+    B_PUSH_SPIN = body.X, body.Y, body.ANGLE, body.VX, body.VY, body.SPIN, body.MASS, body.INERTIA, body.INV_MASS, \
+    body.INV_INERTIA, body.PUSH_X, body.PUSH_Y, body.PUSH_SPIN
 # Columns of a manifold row: its normal and its block matrix (filled for two-point manifolds).
 M_NX, M_NY, M_K11, M_K12, M_K22 = range(5)
 # Columns of a point row: what the narrowphase made (P_X..P_FRICTION), the solver's state
@@ -47,8 +50,6 @@ POINT_COLUMNS = 21
 # Position correction, as `solve_contacts` takes it.
 SPLIT, NGS, NO_CORRECTION = 0, 1, 2
 _CORRECTIONS = {"split": SPLIT, "ngs": NGS, "none": NO_CORRECTION}
-# What `solve` writes back to a body: pose, velocity, pseudo-velocity.
-_BODY_OUT = [B_X, B_Y, B_ANGLE, B_VX, B_VY, B_SPIN, B_PUSH_X, B_PUSH_Y, B_PUSH_SPIN]
 
 
 # --- small pieces --------------------------------------------------------------------------------
@@ -610,8 +611,7 @@ def solve(manifolds: list[Manifold], knobs: Knobs, dt: float, friction: bool) ->
         points += m.points
         first.append(len(points))
 
-    body_rows = np.array([(b.x, b.y, b.angle, b.vx, b.vy, b.spin, b.mass, b.inertia, b.inv_mass, b.inv_inertia,
-                           b.scratch.push_x, b.scratch.push_y, b.scratch.push_spin) for b in bodies], dtype=np.float64)
+    body_rows = np.array([b._row[:SOLVER_COLUMNS] for b in bodies], dtype=np.float64)
     normals = np.array(manifold_rows, dtype=np.float64)
     pair = np.array((body_a, body_b), dtype=np.int64).T.copy()
     offsets = np.array(first, dtype=np.int64)
@@ -628,17 +628,9 @@ def solve(manifolds: list[Manifold], knobs: Knobs, dt: float, friction: bool) ->
         int(knobs.position_iterations), _CORRECTIONS[knobs.position_correction], float(dt), bool(friction),
         POSITION_BETA, LINEAR_SLOP, MAX_CORRECTION, BLOCK_MAX_CONDITION)
 
-    for body, (x, y, angle, vx, vy, spin, push_x, push_y, push_spin) in zip(bodies, body_rows[:, _BODY_OUT].tolist()):
-        body.x = x
-        body.y = y
-        body.angle = angle
-        body.vx = vx
-        body.vy = vy
-        body.spin = spin
-        s = body.scratch
-        s.push_x = push_x
-        s.push_y = push_y
-        s.push_spin = push_spin
+    for moved, row in zip(bodies, body_rows):  # pose, velocity, pseudo-velocity; mass properties stay
+        moved._row[B_X:B_SPIN + 1] = row[B_X:B_SPIN + 1]
+        moved._row[B_PUSH_X:B_PUSH_SPIN + 1] = row[B_PUSH_X:B_PUSH_SPIN + 1]
     for p, (normal, tangent, push, rax, ray, rbx, rby, normal_mass, tangent_mass, approach) in zip(
             points, point_rows[:, P_NORMAL_IMPULSE:P_APPROACH + 1].tolist()):
         p.normal_impulse = normal

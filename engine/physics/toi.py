@@ -17,6 +17,7 @@ import math
 
 import numpy as np
 
+from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, COLUMNS, INV_MASS, X0, Y0, X, Y
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
 from polygolf.engine.physics.grid import BoxGrid, overlapping
 from polygolf.engine.physics.jit import kernel, warm_up
@@ -169,33 +170,44 @@ def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reac
 
 @kernel
 def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
-                    which: np.ndarray, motions: np.ndarray, grid: tuple, seen: np.ndarray, found: np.ndarray,
-                    wv: np.ndarray, wn: np.ndarray, wfirst: np.ndarray, target: float, tolerance: float,
-                    allowance: float) -> np.ndarray:
-    """For each moving body q (shape `which[q]` of a `ShapeTable`; motions[q] = x0, y0, angle0, x1,
-    y1, angle1, bounding radius), the earliest impact of any of its pieces with the wall pieces its
-    swept box meets in `grid` (the walls' `BoxGrid.arrays`), as a fraction of its motion (1.0 if
-    none). `seen` and `found`: the grid query's scratch, one row per wall piece."""
-    out = np.ones(len(which))
+                    state: np.ndarray, rows: np.ndarray, radius: np.ndarray, least: float, grid: tuple,
+                    seen: np.ndarray, found: np.ndarray, wv: np.ndarray, wn: np.ndarray, wfirst: np.ndarray,
+                    target: float, tolerance: float, allowance: float) -> tuple[np.ndarray, float]:
+    """For each body q of `rows` (a `body.BodyStore` state, from its pose at the substep's start to
+    its pose now; shape q of a `ShapeTable`, bounding radius radius[q]), the earliest impact of any
+    of its pieces with the wall pieces its swept box meets in `grid` (the walls' `BoxGrid.arrays`),
+    as a fraction of its motion; 1.0 if none, or if it is at rest, kinematic, or stepped less than
+    `least` (the discrete contact handles small steps). Also the longest step of an awake body.
+    `seen` and `found`: the grid query's scratch, one row per wall piece."""
+    out = np.ones(len(rows))
+    longest = 0.0
     box = np.empty(4)
-    for q in range(len(which)):
-        x0, y0, a0, x1, y1, a1, radius = motions[q]
-        r = radius + target
+    for q in range(len(rows)):
+        k = rows[q]
+        if state[k, ASLEEP] != 0.0:
+            continue
+        x0, y0, a0, x1, y1, a1 = state[k, X0], state[k, Y0], state[k, ANGLE0], state[k, X], state[k, Y], state[k, ANGLE]
+        travel = math.hypot(x1 - x0, y1 - y0) + abs(a1 - a0) * radius[q]
+        if travel > longest:
+            longest = travel
+        if state[k, INV_MASS] == 0.0 or travel < least:
+            continue
+        r = radius[q] + target
         box[0], box[1], box[2], box[3] = min(x0, x1) - r, min(y0, y1) - r, max(x0, x1) + r, max(y0, y1) + r
         count = overlapping(*grid, box, seen, found)
         if count == 0:
             continue
         start, end = np.array((x0, y0, a0)), np.array((x1, y1, a1))
         best = 1.0
-        for k in range(count):
-            w = found[k]
-            for i in range(body_first[which[q]], body_first[which[q] + 1]):
+        for n in range(count):
+            w = found[n]
+            for i in range(body_first[q], body_first[q + 1]):
                 t = time_of_impact(lv, ln, first[i], first[i + 1], reach[i], start, end, wv, wn, wfirst[w],
                                    wfirst[w + 1], target, tolerance, allowance)
                 if t < best:
                     best = t
         out[q] = best
-    return out
+    return out, longest
 
 
 @kernel
@@ -287,10 +299,13 @@ def _warm() -> None:
     args = (square.verts, square.normals, square.first, square.reach)
     table = ShapeTable.of([square, square])
     grid = BoxGrid(np.array([[2.0, -1.0, 3.0, 1.0]]), 1.0)
+    state = np.zeros((2, len(COLUMNS)))
+    state[:, INV_MASS] = 1.0
+    state[1, X], state[1, ANGLE] = 2.0, 0.5
     first_wall_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
-                    table.body_first, np.array([1], dtype=np.int64), np.array([[0.0, 0.0, 0.0, 2.0, 0.0, 0.5, 0.71]]),
-                    grid.arrays, np.zeros(1, dtype=np.bool_), np.empty(1, dtype=np.int64), wall.verts, wall.normals,
-                    wall.first, 0.005, 0.001, 0.005)
+                    table.body_first, state, np.array([0, 1], dtype=np.int64), np.full(2, 0.71), 0.005, grid.arrays,
+                    np.zeros(1, dtype=np.bool_), np.empty(1, dtype=np.int64), wall.verts, wall.normals, wall.first,
+                    0.005, 0.001, 0.005)
     first_pair_hit(*args, start, end, *args, still, still, 0.005, 0.001, 0.005)
     reaches_wall(*args, 0.0, 0.0, 0.0, 2.0, 0.0, 0.5, 1.0 / 240.0, wall.verts, wall.normals, 0, 4)
     pair_reaches(*args, 0.7, start, end, *args, 0.7, still, end, 1.0 / 240.0, 0.01, True, True)

@@ -5,6 +5,7 @@ import numpy as np
 
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
+from polygolf.engine.physics.body import ASLEEP, INV_MASS, SPIN, X0, Y0, X, Y
 from polygolf.engine.physics.collide import NO_SEAMS, max_separation
 from polygolf.engine.physics.grid import BoxGrid, box_pairs
 from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP, TOI_TARGET
@@ -28,36 +29,23 @@ class CCDProcessor(esper.Processor):
         self.statics, self.stats, self.config = res.statics, res.stats, res.config
         walls = len(res.statics.grid)
         self._seen, self._found = np.zeros(walls, dtype=np.bool_), np.empty(walls, dtype=np.int64)
-        self.shapes = res.shapes
+        self.shapes, self.bodies = res.shapes, res.bodies
 
     def process(self) -> None:
         bodies = esper.get_components(Body, Collider)
-        first: dict[int, float] = {}
-        longest = 0.0  # the longest step of an awake body
-        sweep = []  # bodies whose step could skip something: small motions cannot, the discrete contact handles them
-        for ent, (body, col) in bodies:
-            if body.asleep:
-                continue
-            travel = _travel(body, col)
-            longest = max(longest, travel)
-            if body.inv_mass and travel >= LINEAR_SLOP:
-                sweep.append((ent, body, col))
-        if sweep and len(self.statics.grid):
-            table, rows = self.shapes.of(bodies)
-            walls, grid = self.statics.pieces, self.statics.grid
-            hits = first_wall_hits(
-                table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
-                np.array([rows[ent] for ent, _, _ in sweep], dtype=np.int64),
-                np.array([(s.x0, s.y0, s.angle0, body.x, body.y, body.angle, col.radius)
-                          for _, body, col in sweep for s in (body.scratch,)], dtype=np.float64),
-                grid.arrays, self._seen, self._found, walls.verts, walls.normals, walls.first, TOI_TARGET,
-                0.25 * LINEAR_SLOP, LINEAR_SLOP)
-            for (ent, _, _), t in zip(sweep, hits.tolist()):
-                if t < 1.0:
-                    first[ent] = t
+        table, _ = self.shapes.of(bodies)
+        state = self.bodies.gather(esper.get_component(Body))
+        rows = self.shapes.rows(self.bodies, bodies)
+        walls = self.statics.pieces
+        hits, longest = first_wall_hits(
+            table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
+            state, rows, self.shapes.radius, LINEAR_SLOP, self.statics.grid.arrays, self._seen, self._found,
+            walls.verts, walls.normals, walls.first, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP)
+        hit = np.flatnonzero(hits < 1.0)
+        first = dict(zip(self.shapes.ents[hit].tolist(), hits[hit].tolist())) if len(hit) else {}
         # No pair can need sweeping while no body steps half the linear slop.
         if len(bodies) > 1 and longest >= 0.5 * LINEAR_SLOP:
-            self._body_hits(bodies, first)
+            self._body_hits(bodies, state[rows], first)
         for ent, t in first.items():
             body = esper.component_for_entity(ent, Body)
             s = body.scratch
@@ -106,24 +94,24 @@ class CCDProcessor(esper.Processor):
                     return True
         return False
 
-    def _body_hits(self, bodies: list, first: dict[int, float]) -> None:
+    def _body_hits(self, bodies: list, state: np.ndarray, first: dict[int, float]) -> None:
         """Pairs of bodies whose swept boxes overlap and that move fast relative to each other."""
         meet = self.config.collide_bodies
+        ents = self.shapes.ents
+        swept = _swept(state, self.shapes.radius)
+        dynamic = state[:, INV_MASS] != 0.0
         if meet:
-            everyone = [(ent, body, col) for ent, (body, col) in bodies]
-            active = np.array([_moving(body) for _, body, _ in everyone], dtype=np.bool_)
-            candidates = [(min(everyone[i][0], everyone[j][0]), max(everyone[i][0], everyone[j][0]))
-                          for i, j in box_pairs(_swept(everyone), active).tolist()]
+            active = ((state[:, ASLEEP] == 0.0) & dynamic) | (~dynamic & (state[:, SPIN] != 0.0))
+            pairs = ents[box_pairs(swept, active)]
         else:  # bodies meet kinematic ones only: index those, look each moving body up (K shots: no K²)
-            kinematic = [(ent, body, col) for ent, (body, col) in bodies if not body.inv_mass]
-            moving = [(ent, body, col) for ent, (body, col) in bodies if body.inv_mass and not body.asleep]
-            candidates = []
-            if kinematic and moving:
-                found_first, found = BoxGrid(_swept(kinematic), self.statics.grid.cell_size).query_many(
-                    _swept(moving))
-                found = found.tolist()
-                candidates = [(min(ent, kinematic[k][0]), max(ent, kinematic[k][0]))
-                              for q, (ent, _, _) in enumerate(moving) for k in found[found_first[q]:found_first[q + 1]]]
+            kinematic = np.flatnonzero(~dynamic)
+            moving = np.flatnonzero(dynamic & (state[:, ASLEEP] == 0.0))
+            pairs = np.zeros((0, 2), dtype=np.int64)
+            if len(kinematic) and len(moving):
+                found_first, found = BoxGrid(swept[kinematic], self.statics.grid.cell_size).query_many(swept[moving])
+                pairs = np.stack((np.repeat(ents[moving], found_first[1:] - found_first[:-1]),
+                                  ents[kinematic[found]]), axis=1)
+        candidates = [(a, b) for a, b in np.sort(pairs.reshape(-1, 2), axis=1).tolist()]
         for ea, eb in sorted(candidates):
             a, col_a = esper.component_for_entity(ea, Body), esper.component_for_entity(ea, Collider)
             b, col_b = esper.component_for_entity(eb, Body), esper.component_for_entity(eb, Collider)
@@ -161,21 +149,18 @@ def _end(body: Body) -> np.ndarray:
     return np.array((body.x, body.y, body.angle))
 
 
-def _swept(bodies: list[tuple[int, Body, Collider]]) -> np.ndarray:
-    """The box each body's motion this substep sweeps, grown by the impact distance."""
-    return np.array([(min(s.x0, body.x) - r, min(s.y0, body.y) - r, max(s.x0, body.x) + r, max(s.y0, body.y) + r)
-                     for _, body, col in bodies for s, r in ((body.scratch, col.radius + TOI_TARGET),)],
-                    dtype=np.float64).reshape(-1, 4)
+def _swept(state: np.ndarray, radius: np.ndarray) -> np.ndarray:
+    """The box each body's motion this substep sweeps (rows of `state`, their bounding radii), grown
+    by the impact distance."""
+    r = radius + TOI_TARGET
+    x0, y0, x, y = state[:, X0], state[:, Y0], state[:, X], state[:, Y]
+    return np.stack((np.minimum(x0, x) - r, np.minimum(y0, y) - r, np.maximum(x0, x) + r, np.maximum(y0, y) + r),
+                    axis=1)
 
 
 def _moving(body: Body) -> bool:
     """Awake and dynamic, or kinematic and turning."""
     return (not body.asleep and body.inv_mass > 0.0) or (body.inv_mass == 0.0 and body.spin != 0.0)
-
-
-def _travel(body: Body, col: Collider) -> float:
-    s = body.scratch
-    return math.hypot(body.x - s.x0, body.y - s.y0) + abs(body.angle - s.angle0) * col.radius
 
 
 def _relative_travel(a: Body, col_a: Collider, b: Body, col_b: Collider) -> float:

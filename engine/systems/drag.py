@@ -1,45 +1,33 @@
-import math
-
 import esper
+import numpy as np
 
 from polygolf.engine.components import Body, Drag
 from polygolf.engine.components.resources import Resources
-
-
-def decay(value: float, rate: float, resistance: float, dt: float) -> float:
-    """Magnitude after dt under d|v|/dt = -rate·|v| - resistance, solved exactly; never below zero.
-
-    |v|(dt) = (|v| + c/k)·exp(-k·dt) - c/k, or |v| - c·dt when k = 0."""
-    if rate > 0.0:
-        after = (value + resistance / rate) * math.exp(-rate * dt) - resistance / rate
-    else:
-        after = value - resistance * dt
-    return after if after > 0.0 else 0.0
+from polygolf.engine.physics.body import Selection
+from polygolf.engine.physics.motion import drag
 
 
 class DragProcessor(esper.Processor):
     """Drag on the green: exponential damping (`linear`, `angular`, 1/s) together with rolling
     resistance (`rolling`, `rolling_angular`, a constant deceleration), integrated exactly over the
-    substep, so a roll follows the closed form whatever the preset. The surface under the body
-    (sand, ice) scales every rate for this substep through `Drag.scale`."""
+    substep (`motion.drag`), so a roll follows the closed form whatever the preset. The surface
+    under the body (sand, ice) scales every rate for this substep through the body's `drag_scale`.
+    A body's `Drag` is read when the world's bodies change, not every substep."""
 
     name = "drag"
 
     def __init__(self, res: Resources) -> None:
-        self.config = res.config
+        self.config, self.bodies = res.config, res.bodies
+        self._dragged = Selection()
+        self._found: list | None = None
+        self._rates = np.zeros((0, 4))
 
     def process(self) -> None:
-        dt = self.config.dt
-        for _, (body, drag) in esper.get_components(Body, Drag):
-            if body.asleep or body.inv_mass == 0.0:
-                continue
-            scale, drag.scale = drag.scale, 1.0
-            if drag.linear or drag.rolling:
-                speed = math.hypot(body.vx, body.vy)
-                if speed > 0.0:
-                    factor = decay(speed, drag.linear * scale, drag.rolling * scale, dt) / speed
-                    body.vx *= factor
-                    body.vy *= factor
-            if (drag.angular or drag.rolling_angular) and body.spin:
-                turned = decay(abs(body.spin), drag.angular * scale, drag.rolling_angular * scale, dt)
-                body.spin = math.copysign(turned, body.spin)
+        state = self.bodies.gather(esper.get_component(Body))
+        found = esper.get_components(Body, Drag)
+        rows = self._dragged.of(self.bodies, found)
+        if found is not self._found:
+            self._rates = np.array([(d.linear, d.angular, d.rolling, d.rolling_angular) for _, (_, d) in found],
+                                   dtype=np.float64).reshape(-1, 4)
+            self._found = found
+        drag(state, rows, self._rates, self.config.dt)

@@ -1,7 +1,9 @@
 import esper
+import numpy as np
 
 from polygolf.engine.components import Body
 from polygolf.engine.components.resources import Resources
+from polygolf.engine.physics.motion import accelerate
 
 
 class GravityProcessor(esper.Processor):
@@ -11,12 +13,10 @@ class GravityProcessor(esper.Processor):
     name = "gravity"
 
     def __init__(self, res: Resources) -> None:
-        self.config = res.config
+        self.config, self.bodies = res.config, res.bodies
 
     def process(self) -> None:
+        state = self.bodies.gather(esper.get_component(Body))
         gx, gy = self.config.gravity
-        dt = self.config.dt
-        for _, body in esper.get_component(Body):
-            if body.inv_mass > 0.0 and not body.asleep:
-                body.vx += gx * dt
-                body.vy += gy * dt
+        n = len(state)
+        accelerate(state, np.arange(n, dtype=np.int64), np.full(n, float(gx)), np.full(n, float(gy)), self.config.dt)

@@ -1,14 +1,17 @@
 import esper
+import numpy as np
 
 from polygolf.engine.components import Body, Drag
 from polygolf.engine.components.resources import Resources
+from polygolf.engine.physics.body import Selection
+from polygolf.engine.physics.motion import advance
 from polygolf.engine.physics.settings import REST_ANGULAR, REST_LINEAR, REST_SPEED_CAP, TIME_TO_REST
 
 
 class IntegrateProcessor(esper.Processor):
     """Semi-implicit Euler, position half: x += v·dt with the velocity the contact solver left at
     the end of the last substep (forces then update velocities, and the solver constrains them
-    before they move anything). Also rest detection.
+    before they move anything). Also rest detection (`motion.advance`).
 
     A body is put to rest when it is touching something or slowed by drag (a free body with no drag
     coasts for ever: sleeping it would steal its momentum) and has hardly *moved* for TIME_TO_REST.
@@ -19,35 +22,17 @@ class IntegrateProcessor(esper.Processor):
     name = "integrate"
 
     def __init__(self, res: Resources) -> None:
-        self.config, self.contacts = res.config, res.contacts
+        self.config, self.contacts, self.bodies = res.config, res.contacts, res.bodies
+        self._dragged = Selection()
 
     def process(self) -> None:
+        state = self.bodies.gather(esper.get_component(Body))
+        settles = np.zeros(len(state), dtype=np.bool_)
+        settles[self._dragged.of(self.bodies, esper.get_components(Body, Drag))] = True
+        rows = self.bodies.rows
+        for ent in self.contacts.touching:
+            row = rows.get(ent)
+            if row is not None:
+                settles[row] = True
         dt = self.config.dt
-        still_step = REST_LINEAR * dt
-        still_turn = REST_ANGULAR * dt
-        touching = self.contacts.touching
-        for ent, body in esper.get_component(Body):
-            if body.asleep:
-                continue
-            s = body.scratch
-            if body.inv_mass > 0.0 and (ent in touching or esper.has_component(ent, Drag)):
-                dx, dy = body.x - s.x0, body.y - s.y0
-                if (dx * dx + dy * dy < still_step * still_step and abs(body.angle - s.angle0) < still_turn
-                        and body.vx * body.vx + body.vy * body.vy < REST_SPEED_CAP * REST_SPEED_CAP):
-                    s.still_time += dt
-                    if s.still_time >= TIME_TO_REST:
-                        body.rest()
-                        continue
-                else:
-                    s.still_time = 0.0
-            body.mark_start()
-            step = dt
-            if s.lag:
-                # Continuous collision stopped the body early last substep; it now moves on with its
-                # new velocity for the time it lost, so impacts do not slow the clock.
-                step += s.lag
-                body.angle += body.spin * s.lag
-                s.lag = 0.0
-            s.moved_for = step
-            body.x += body.vx * step
-            body.y += body.vy * step
+        advance(state, settles, dt, REST_LINEAR * dt, REST_ANGULAR * dt, REST_SPEED_CAP, TIME_TO_REST)

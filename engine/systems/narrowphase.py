@@ -1,11 +1,12 @@
 from collections import Counter
-from itertools import accumulate, groupby
+from itertools import groupby
 
 import esper
 import numpy as np
 
 from polygolf.engine.components import Body, Collider, Wall
 from polygolf.engine.components.resources import Resources
+from polygolf.engine.physics.body import ANGLE, SPIN, VX, VY, X, Y
 from polygolf.engine.physics.collide import (
     BODY,
     FEATURE,
@@ -39,7 +40,7 @@ class NarrowphaseProcessor(esper.Processor):
     def __init__(self, res: Resources) -> None:
         self.config, self.candidates, self.contacts = res.config, res.candidates, res.contacts
         self.statics, self.stats = res.statics, res.stats
-        self.shapes = res.shapes
+        self.shapes, self.bodies = res.shapes, res.bodies
         self._owner, self._index = res.statics.owner.tolist(), res.statics.index.tolist()  # fixed once built
 
     def process(self) -> None:
@@ -66,7 +67,7 @@ class NarrowphaseProcessor(esper.Processor):
         # A body with something else near (a wall or another body) may be halted by it in the solve.
         busy = Counter(e for ea, eb, *_ in pairs for e in (ea, eb))
         if pairs:
-            busy.update(self.candidates.walls.keys())
+            busy.update(self.candidates.near.tolist())
         for (ea, eb, a, b, _), (col_a, col_b, gap) in zip(pairs, near):
             gapped.append(gap > GAP_TOLERANCE and not pair_reaches(
                 *_arrays(col_a), col_a.radius, _pose(a), _velocity(a), *_arrays(col_b), col_b.radius, _pose(b),
@@ -80,22 +81,23 @@ class NarrowphaseProcessor(esper.Processor):
                     gapped[k], grew = False, True
                     pressed |= {ea, eb}
 
-        near_walls = self.candidates.walls
-        if near_walls:
-            table, table_rows = self.shapes.of(esper.get_components(Body, Collider))
-            ents = list(near_walls)
-            bodies = [esper.component_for_entity(ent, Body) for ent in ents]
-            near_first = np.array([0, *accumulate(len(found) for found in near_walls.values())], dtype=np.int64)
+        near_walls = self.candidates.near
+        if len(near_walls):
+            everyone = esper.get_components(Body, Collider)
+            table, _ = self.shapes.of(everyone)
+            state = self.bodies.gather(esper.get_component(Body))[self.shapes.rows(self.bodies, everyone)]
+            rows_of_near = self.shapes.index(near_walls)
+            ents = near_walls.tolist()
+            held = np.array([ent in pressed for ent in ents], dtype=np.bool_).reshape(-1)
             rows = bodies_wall_contacts(
                 table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
-                np.array([table_rows[ent] for ent in ents], dtype=np.int64),
-                np.array([(b.x, b.y, b.angle, b.vx, b.vy, b.spin) for b in bodies], dtype=np.float64).reshape(-1, 6),
-                np.array([ent in pressed for ent in ents], dtype=np.bool_), near_first,
-                np.concatenate(list(near_walls.values())), self.statics.arrays, dt, CONTACT_MARGIN).tolist()
+                rows_of_near, state[rows_of_near][:, [X, Y, ANGLE, VX, VY, SPIN]],
+                held, self.candidates.near_first, self.candidates.near_found, self.statics.arrays, dt,
+                CONTACT_MARGIN).tolist()
             owner, index = self._owner, self._index
             for q, kept in groupby(rows, key=lambda row: int(row[BODY])):  # body by body
-                ent, body = ents[q], bodies[q]
-                col = esper.component_for_entity(ent, Collider)
+                ent = ents[q]
+                body, col = esper.component_for_entity(ent, Body), esper.component_for_entity(ent, Collider)
                 materials = {}
                 raw = []
                 for row in kept:

@@ -1,19 +1,26 @@
 import esper
+import numpy as np
 
 from polygolf.engine.components import Ball, Body, Collider, HoleState
 from polygolf.engine.components.resources import Resources
+from polygolf.engine.physics.body import ASLEEP, Selection
 
 
 class ScoringProcessor(esper.Processor):
     """Last stage: counts this substep's strokes ("shot"), penalties and balls dropping ("holed") on
     the `HoleState` of the ball they happened to (one per player), and picks a ball up once it rests
     after the last stroke allowed. A finished ball leaves the green: its collider goes, so the balls
-    still in play neither hit it in the cup nor where it was picked up."""
+    still in play neither hit it in the cup nor where it was picked up.
+
+    A ball's state can change only through an event or by its coming to rest, so only those balls
+    are looked at (all of them when the world's entities change)."""
 
     name = "scoring"
 
     def __init__(self, res: Resources) -> None:
-        self.events = res.events
+        self.events, self.bodies = res.events, res.bodies
+        self._balls = Selection()
+        self._was_asleep = np.zeros(0, dtype=np.bool_)
 
     def process(self) -> None:
         fired, self.events.fired = self.events.fired, []
@@ -27,8 +34,22 @@ class ScoringProcessor(esper.Processor):
                 state.penalties += amount
             elif kind == "holed":
                 state.holed = True
-        for ent, (body, _, state) in esper.get_components(Body, Ball, HoleState):
-            if not state.finished and state.score >= state.max_strokes and body.asleep:
-                state.picked_up = True
-            if state.finished and esper.has_component(ent, Collider):
+        state = self.bodies.gather(esper.get_component(Body))
+        balls = esper.get_components(Body, Ball, HoleState)
+        known = self._balls.rows
+        rows = self._balls.of(self.bodies, balls)
+        asleep = state[rows, ASLEEP] != 0.0
+        if rows is not known or len(self._was_asleep) != len(rows):
+            look = range(len(rows))  # new entities: look at every ball once
+        else:
+            named = {ent for _, ent, _ in fired}
+            look = sorted({*np.flatnonzero(asleep & ~self._was_asleep).tolist(),
+                           *(q for q, (ent, _) in enumerate(balls) if ent in named)}) if named else \
+                np.flatnonzero(asleep & ~self._was_asleep).tolist()
+        self._was_asleep = asleep
+        for q in look:
+            ent, (_, _, hole) = balls[q]
+            if not hole.finished and hole.score >= hole.max_strokes and asleep[q]:
+                hole.picked_up = True
+            if hole.finished and esper.has_component(ent, Collider):
                 esper.remove_component(ent, Collider)

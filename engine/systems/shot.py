@@ -15,8 +15,12 @@ class ShotProcessor(esper.Processor):
 
     def __init__(self, res: Resources) -> None:
         self.events = res.events
+        self._seen = -1  # ShotInput.requests when this stage last looked
 
     def process(self) -> None:
+        if ShotInput.requests == self._seen:
+            return  # nothing asked for since
+        self._seen = ShotInput.requests
         for ent, (body, collider, shot) in esper.get_components(Body, Collider, ShotInput):
             if not shot.pending:
                 continue

@@ -1,7 +1,11 @@
 import esper
+import numpy as np
 
 from polygolf.engine.components import Ball, Body, Region, Slope
 from polygolf.engine.components.resources import Resources
+from polygolf.engine.physics.body import Selection
+from polygolf.engine.physics.motion import accelerate
+from polygolf.engine.systems.areas import AreaIndex
 
 
 class SlopeProcessor(esper.Processor):
@@ -11,16 +15,15 @@ class SlopeProcessor(esper.Processor):
     name = "slope"
 
     def __init__(self, res: Resources) -> None:
-        self.config = res.config
+        self.config, self.bodies = res.config, res.bodies
+        self._balls, self._slopes = Selection(), AreaIndex()
 
     def process(self) -> None:
-        dt = self.config.dt
+        state = self.bodies.gather(esper.get_component(Body))
+        rows = self._balls.of(self.bodies, esper.get_components(Body, Ball))
         zones = esper.get_components(Region, Slope)
-        for _, (body, _) in esper.get_components(Body, Ball):
-            if body.asleep:
-                continue
-            for _, (region, slope) in zones:
-                if region.contains(body.x, body.y):
-                    body.vx += slope.push[0] * dt
-                    body.vy += slope.push[1] * dt
-                    break
+        on = self._slopes.under(state, rows, zones)
+        pushed = on >= 0
+        if pushed.any():
+            push = np.array([slope.push for _, (_, slope) in zones], dtype=np.float64)[on[pushed]]
+            accelerate(state, rows[pushed], push[:, 0].copy(), push[:, 1].copy(), self.config.dt)

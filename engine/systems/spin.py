@@ -2,6 +2,7 @@ import esper
 
 from polygolf.engine.components import Body
 from polygolf.engine.components.resources import Resources
+from polygolf.engine.physics.motion import turn
 
 
 class SpinProcessor(esper.Processor):
@@ -11,10 +12,7 @@ class SpinProcessor(esper.Processor):
     name = "spin"
 
     def __init__(self, res: Resources) -> None:
-        self.config = res.config
+        self.config, self.bodies = res.config, res.bodies
 
     def process(self) -> None:
-        dt = self.config.dt
-        for _, body in esper.get_component(Body):
-            if body.spin and not body.asleep:
-                body.angle += body.spin * dt
+        turn(self.bodies.gather(esper.get_component(Body)), self.config.dt)

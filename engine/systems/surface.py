@@ -1,24 +1,29 @@
 import esper
+import numpy as np
 
 from polygolf.engine.components import Ball, Body, Drag, Region
 from polygolf.engine.components.resources import Resources
+from polygolf.engine.physics.body import DRAG_SCALE, Selection
+from polygolf.engine.systems.areas import AreaIndex
 
 
 class SurfaceProcessor(esper.Processor):
     """A ball whose centre is on a surface of kind `marker` rolls under the green's drag times the
-    surface's `drag_scale` this substep (the drag processor applies and resets it)."""
+    surface's `drag_scale` this substep (the body's `drag_scale`: the drag processor applies and
+    resets it)."""
 
     marker: type
 
     def __init__(self, res: Resources) -> None:
-        pass  # reads components only
+        self.bodies = res.bodies
+        self._balls, self._areas = Selection(), AreaIndex()
 
     def process(self) -> None:
+        state = self.bodies.gather(esper.get_component(Body))
+        rows = self._balls.of(self.bodies, esper.get_components(Body, Drag, Ball))
         zones = esper.get_components(Region, self.marker)
-        for _, (body, drag, _) in esper.get_components(Body, Drag, Ball):
-            if body.asleep:
-                continue
-            for _, (region, surface) in zones:
-                if region.contains(body.x, body.y):
-                    drag.scale = surface.drag_scale
-                    break
+        on = self._areas.under(state, rows, zones)
+        found = on >= 0
+        if found.any():
+            scales = np.array([surface.drag_scale for _, (_, surface) in zones], dtype=np.float64)
+            state[rows[found], DRAG_SCALE] = scales[on[found]]

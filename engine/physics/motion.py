@@ -1,0 +1,180 @@
+"""Free motion of every body of a world, one kernel call a stage: semi-implicit Euler's position half
+with rest detection, orientation, constant accelerations and drag. Each kernel walks the rows of a
+`body.BodyStore` state array (`body.COLUMNS`), skipping bodies at rest."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from polygolf.engine.physics.body import (
+    ANGLE,
+    ANGLE0,
+    ASLEEP,
+    COLUMNS,
+    DRAG_SCALE,
+    INERTIA,
+    INV_MASS,
+    LAG,
+    MASS,
+    MOVED_FOR,
+    SPIN,
+    STILL_TIME,
+    VX,
+    VY,
+    X0,
+    Y0,
+    X,
+    Y,
+)
+from polygolf.engine.physics.jit import kernel, warm_up
+
+
+@kernel
+def _mark_start(state: np.ndarray, k: int) -> None:
+    state[k, X0] = state[k, X]
+    state[k, Y0] = state[k, Y]
+    state[k, ANGLE0] = state[k, ANGLE]
+
+
+@kernel
+def advance(state: np.ndarray, settles: np.ndarray, dt: float, still_step: float, still_turn: float,
+            speed_cap: float, time_to_rest: float) -> None:
+    """x += v·dt for every awake body (plus the time continuous collision owes it), after putting to
+    rest each dynamic body that `settles` (touching something, or slowed by drag) and has moved less
+    than `still_step` and turned less than `still_turn` a substep, below `speed_cap`, for
+    `time_to_rest` seconds."""
+    for k in range(state.shape[0]):
+        if state[k, ASLEEP] != 0.0:
+            continue
+        if state[k, INV_MASS] > 0.0 and settles[k]:
+            dx, dy = state[k, X] - state[k, X0], state[k, Y] - state[k, Y0]
+            vx, vy = state[k, VX], state[k, VY]
+            if (dx * dx + dy * dy < still_step * still_step and abs(state[k, ANGLE] - state[k, ANGLE0]) < still_turn
+                    and vx * vx + vy * vy < speed_cap * speed_cap):
+                state[k, STILL_TIME] += dt
+                if state[k, STILL_TIME] >= time_to_rest:
+                    state[k, ASLEEP] = 1.0
+                    state[k, VX] = state[k, VY] = state[k, SPIN] = 0.0
+                    _mark_start(state, k)
+                    continue
+            else:
+                state[k, STILL_TIME] = 0.0
+        _mark_start(state, k)
+        step = dt
+        lag = state[k, LAG]
+        if lag:
+            # Continuous collision stopped the body early last substep; it now moves on with its new
+            # velocity for the time it lost, so impacts do not slow the clock.
+            step += lag
+            state[k, ANGLE] += state[k, SPIN] * lag
+            state[k, LAG] = 0.0
+        state[k, MOVED_FOR] = step
+        state[k, X] += state[k, VX] * step
+        state[k, Y] += state[k, VY] * step
+
+
+@kernel
+def turn(state: np.ndarray, dt: float) -> None:
+    """angle += ω·dt for every awake body that spins."""
+    for k in range(state.shape[0]):
+        if state[k, SPIN] and state[k, ASLEEP] == 0.0:
+            state[k, ANGLE] += state[k, SPIN] * dt
+
+
+@kernel
+def accelerate(state: np.ndarray, rows: np.ndarray, ax: np.ndarray, ay: np.ndarray, dt: float) -> None:
+    """v += a·dt for each awake dynamic body of `rows`, with that row's acceleration."""
+    for q in range(rows.shape[0]):
+        k = rows[q]
+        if state[k, INV_MASS] > 0.0 and state[k, ASLEEP] == 0.0:
+            state[k, VX] += ax[q] * dt
+            state[k, VY] += ay[q] * dt
+
+
+@kernel
+def decay(value: float, rate: float, resistance: float, dt: float) -> float:
+    """Magnitude after dt under d|v|/dt = -rate·|v| - resistance, solved exactly; never below zero.
+
+    |v|(dt) = (|v| + c/k)·exp(-k·dt) - c/k, or |v| - c·dt when k = 0."""
+    if rate > 0.0:
+        after = (value + resistance / rate) * math.exp(-rate * dt) - resistance / rate
+    else:
+        after = value - resistance * dt
+    return after if after > 0.0 else 0.0
+
+
+@kernel
+def drag(state: np.ndarray, rows: np.ndarray, rates: np.ndarray, dt: float) -> None:
+    """Drag on each awake dynamic body of `rows`: `rates` per row are (linear, angular, rolling,
+    rolling_angular), each times the body's `drag_scale`, which is then reset to 1."""
+    for q in range(rows.shape[0]):
+        k = rows[q]
+        if state[k, ASLEEP] != 0.0 or state[k, INV_MASS] == 0.0:
+            continue
+        scale = state[k, DRAG_SCALE]
+        state[k, DRAG_SCALE] = 1.0
+        linear, angular, rolling, rolling_angular = rates[q, 0], rates[q, 1], rates[q, 2], rates[q, 3]
+        if linear or rolling:
+            vx, vy = state[k, VX], state[k, VY]
+            speed = math.hypot(vx, vy)
+            if speed > 0.0:
+                factor = decay(speed, linear * scale, rolling * scale, dt) / speed
+                state[k, VX] = vx * factor
+                state[k, VY] = vy * factor
+        spin = state[k, SPIN]
+        if (angular or rolling_angular) and spin:
+            turned = decay(abs(spin), angular * scale, rolling_angular * scale, dt)
+            state[k, SPIN] = math.copysign(turned, spin)
+
+
+@kernel
+def captured(state: np.ndarray, rows: np.ndarray, cups: np.ndarray, out: np.ndarray) -> None:
+    """For each awake body of `rows`, the first cup (x, y, radius, max_speed) its centre is over
+    slowly enough to drop in, or -1: at most `max_speed` over the centre, falling linearly to zero at
+    the rim."""
+    for q in range(rows.shape[0]):
+        k = rows[q]
+        out[q] = -1
+        if state[k, ASLEEP] != 0.0:
+            continue
+        for c in range(cups.shape[0]):
+            distance = math.hypot(state[k, X] - cups[c, 0], state[k, Y] - cups[c, 1])
+            if distance < cups[c, 2]:
+                share = 1.0 - distance / cups[c, 2]
+                if math.hypot(state[k, VX], state[k, VY]) < cups[c, 3] * (share if share > 0.0 else 0.0):
+                    out[q] = c
+                    break
+
+
+@kernel
+def kinetic_energy(state: np.ndarray) -> tuple[float, bool]:
+    """The bodies' kinetic energy (summed in row order) and whether every pose and energy is finite."""
+    total, finite = 0.0, True
+    for k in range(state.shape[0]):
+        e = 0.0
+        if state[k, INV_MASS] > 0.0:
+            vx, vy, spin = state[k, VX], state[k, VY], state[k, SPIN]
+            e = 0.5 * (state[k, MASS] * (vx * vx + vy * vy) + state[k, INERTIA] * spin * spin)
+        if not (math.isfinite(e) and math.isfinite(state[k, X]) and math.isfinite(state[k, Y])
+                and math.isfinite(state[k, ANGLE])):
+            finite = False
+        total += e
+    return total, finite
+
+
+@warm_up("motion")
+def _warm() -> None:
+    state = np.zeros((2, len(COLUMNS)))
+    state[:, INV_MASS] = 1.0
+    state[:, VX] = 1.0
+    state[:, SPIN] = 1.0
+    state[:, DRAG_SCALE] = 1.0
+    rows = np.arange(2, dtype=np.int64)
+    advance(state, np.ones(2, dtype=np.bool_), 0.01, 0.001, 0.001, 0.1, 0.25)
+    turn(state, 0.01)
+    accelerate(state, rows, np.ones(2), np.zeros(2), 0.01)
+    drag(state, rows, np.array([[0.1, 0.1, 0.5, 0.5], [0.0, 0.0, 0.5, 0.5]]), 0.01)
+    captured(state, rows, np.array([[0.0, 0.0, 1.0, 2.0]]), np.empty(2, dtype=np.int64))
+    kinetic_energy(state)

@@ -36,7 +36,10 @@ def _alone(hole, shape, shot: Shot, preset: str):
         play.close()
 
 
-@pytest.mark.parametrize(("course", "number"), [("hazards", 9), ("meadow", 8)])  # gauntlet, pinball
+# gauntlet, pinball; bunker lane, ice rink and the slide, where balls of one batch cross different
+# surfaces at once (each ball's drag is scaled by the surface under it alone)
+@pytest.mark.parametrize(("course", "number"), [("hazards", 9), ("meadow", 8), ("hazards", 1), ("hazards", 3),
+                                                ("hazards", 8)])
 def test_each_shot_of_a_batch_ends_bit_for_bit_as_played_alone(courses, course, number):
     hole = find_course(courses, course).holes[number - 1]
     tee = hole.layout.tee

@@ -120,9 +120,10 @@ def inside(verts: np.ndarray, start: int, end: int, x: float, y: float) -> bool:
 
 @kernel
 def first_area(state: np.ndarray, rows: np.ndarray, verts: np.ndarray, first: np.ndarray, boxes: np.ndarray,
-               out: np.ndarray) -> None:
+               out: np.ndarray) -> int:
     """For each awake body of `rows` (a `body.BodyStore` state), the first area that holds its
-    centre, or -1 (also for a body at rest)."""
+    centre, or -1 (also for a body at rest). Returns how many bodies are on one."""
+    found = 0
     for q in range(rows.shape[0]):
         k = rows[q]
         out[q] = -1
@@ -133,7 +134,9 @@ def first_area(state: np.ndarray, rows: np.ndarray, verts: np.ndarray, first: np
             if (boxes[a, 0] <= x <= boxes[a, 2] and boxes[a, 1] <= y <= boxes[a, 3]
                     and inside(verts, first[a], first[a + 1], x, y)):
                 out[q] = a
+                found += 1
                 break
+    return found
 
 
 @warm_up("shapes")

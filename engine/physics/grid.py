@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from polygolf.engine.physics.body import ASLEEP, COLUMNS, INV_MASS, X, Y
+from polygolf.engine.physics.body import ASLEEP, COLUMNS, INV_MASS, SPIN, VX, VY, X0, Y0, X, Y
 from polygolf.engine.physics.jit import kernel, warm_up
 
 MAX_CELLS = 256  # cells one box may be filed under
@@ -189,6 +189,51 @@ def box_pairs(boxes: np.ndarray, active: np.ndarray) -> np.ndarray:
     return out[np.argsort(keys, kind="mergesort")]
 
 
+@kernel
+def body_pairs(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, grow: float, swept: bool, meet: bool,
+               turning_is_active: bool) -> np.ndarray:
+    """Pairs (i, j) of `rows` of a `body.BodyStore` state whose boxes overlap: each body's box about
+    its pose (or, `swept`, about its motion from the substep's start), its bounding radius plus
+    `grow`. With `meet`, every pair of which one is active (awake and dynamic, or kinematic and
+    moving; `turning_is_active`: a kinematic body that turns counts even when marked at rest), by
+    `box_pairs`; else only a kinematic body with an awake dynamic one (bodies that meet walls and
+    kinematic bodies only: K balls, no K² pairs). i < j, sorted."""
+    n = len(rows)
+    boxes = np.empty((n, 4))
+    active = np.zeros(n, dtype=np.bool_)
+    moving = np.zeros(n, dtype=np.bool_)
+    for q in range(n):
+        k = rows[q]
+        x, y, r = state[k, X], state[k, Y], radius[q] + grow
+        x0, y0 = (state[k, X0], state[k, Y0]) if swept else (x, y)
+        boxes[q, 0], boxes[q, 1] = min(x0, x) - r, min(y0, y) - r
+        boxes[q, 2], boxes[q, 3] = max(x0, x) + r, max(y0, y) + r
+        awake, dynamic = state[k, ASLEEP] == 0.0, state[k, INV_MASS] != 0.0
+        moving[q] = awake and dynamic
+        if turning_is_active:
+            active[q] = moving[q] or (not dynamic and state[k, SPIN] != 0.0)
+        else:
+            active[q] = awake and (dynamic or state[k, VX] != 0.0 or state[k, VY] != 0.0 or state[k, SPIN] != 0.0)
+    if meet:
+        return box_pairs(boxes, active)
+    pairs = np.empty((16, 2), dtype=np.int64)
+    count = 0
+    for i in range(n):
+        if state[rows[i], INV_MASS] != 0.0:
+            continue
+        for j in range(n):
+            if moving[j] and overlaps(boxes[i], boxes[j]):
+                if count == len(pairs):
+                    grown = np.empty((2 * len(pairs), 2), dtype=np.int64)
+                    grown[:count] = pairs[:count]
+                    pairs = grown
+                pairs[count, 0], pairs[count, 1] = min(i, j), max(i, j)
+                count += 1
+    out = pairs[:count].copy()
+    keys = out[:, 0] * (n + 1) + out[:, 1]
+    return out[np.argsort(keys, kind="mergesort")]
+
+
 class BoxGrid:
     """A uniform grid over a fixed set of boxes ((n, 4) float64)."""
 
@@ -238,3 +283,5 @@ def _warm() -> None:
     state[0, INV_MASS] = 1.0
     bodies_near(state, np.zeros(1, dtype=np.int64), np.ones(1), 0.01, *grid.arrays)
     box_pairs(boxes, np.ones(3, dtype=np.bool_))
+    for meet in (True, False):
+        body_pairs(state, np.zeros(1, dtype=np.int64), np.ones(1), 0.01, meet, meet, meet)

@@ -130,10 +130,11 @@ def drag(state: np.ndarray, rows: np.ndarray, rates: np.ndarray, dt: float) -> N
 
 
 @kernel
-def captured(state: np.ndarray, rows: np.ndarray, cups: np.ndarray, out: np.ndarray) -> None:
+def captured(state: np.ndarray, rows: np.ndarray, cups: np.ndarray, out: np.ndarray) -> int:
     """For each awake body of `rows`, the first cup (x, y, radius, max_speed) its centre is over
     slowly enough to drop in, or -1: at most `max_speed` over the centre, falling linearly to zero at
-    the rim."""
+    the rim. Returns how many were caught."""
+    caught = 0
     for q in range(rows.shape[0]):
         k = rows[q]
         out[q] = -1
@@ -145,7 +146,9 @@ def captured(state: np.ndarray, rows: np.ndarray, cups: np.ndarray, out: np.ndar
                 share = 1.0 - distance / cups[c, 2]
                 if math.hypot(state[k, VX], state[k, VY]) < cups[c, 3] * (share if share > 0.0 else 0.0):
                     out[q] = c
+                    caught += 1
                     break
+    return caught
 
 
 @kernel
@@ -164,6 +167,20 @@ def kinetic_energy(state: np.ndarray) -> tuple[float, bool]:
     return total, finite
 
 
+@kernel
+def came_to_rest(state: np.ndarray, rows: np.ndarray, was_asleep: np.ndarray, out: np.ndarray) -> int:
+    """The bodies of `rows` (indices into it, into `out`) at rest now that were not when `was_asleep`
+    was last updated (it is, here). Returns how many."""
+    count = 0
+    for q in range(rows.shape[0]):
+        asleep = state[rows[q], ASLEEP] != 0.0
+        if asleep and not was_asleep[q]:
+            out[count] = q
+            count += 1
+        was_asleep[q] = asleep
+    return count
+
+
 @warm_up("motion")
 def _warm() -> None:
     state = np.zeros((2, len(COLUMNS)))
@@ -178,3 +195,4 @@ def _warm() -> None:
     drag(state, rows, np.array([[0.1, 0.1, 0.5, 0.5], [0.0, 0.0, 0.5, 0.5]]), 0.01)
     captured(state, rows, np.array([[0.0, 0.0, 1.0, 2.0]]), np.empty(2, dtype=np.int64))
     kinetic_energy(state)
+    came_to_rest(state, rows, np.zeros(2, dtype=np.bool_), np.empty(2, dtype=np.int64))

@@ -172,15 +172,17 @@ def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reac
 def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
                     state: np.ndarray, rows: np.ndarray, radius: np.ndarray, least: float, grid: tuple,
                     seen: np.ndarray, found: np.ndarray, wv: np.ndarray, wn: np.ndarray, wfirst: np.ndarray,
-                    target: float, tolerance: float, allowance: float) -> tuple[np.ndarray, float]:
+                    target: float, tolerance: float, allowance: float) -> tuple[np.ndarray, float, int]:
     """For each body q of `rows` (a `body.BodyStore` state, from its pose at the substep's start to
     its pose now; shape q of a `ShapeTable`, bounding radius radius[q]), the earliest impact of any
     of its pieces with the wall pieces its swept box meets in `grid` (the walls' `BoxGrid.arrays`),
     as a fraction of its motion; 1.0 if none, or if it is at rest, kinematic, or stepped less than
-    `least` (the discrete contact handles small steps). Also the longest step of an awake body.
+    `least` (the discrete contact handles small steps). Also the longest step of an awake body, and
+    how many bodies hit.
     `seen` and `found`: the grid query's scratch, one row per wall piece."""
     out = np.ones(len(rows))
     longest = 0.0
+    hits = 0
     box = np.empty(4)
     for q in range(len(rows)):
         k = rows[q]
@@ -207,7 +209,9 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
                 if t < best:
                     best = t
         out[q] = best
-    return out, longest
+        if best < 1.0:
+            hits += 1
+    return out, longest, hits
 
 
 @kernel

@@ -10,20 +10,21 @@ from polygolf.engine.physics.geometry import Areas, first_area
 
 class AreaIndex:
     """`under(state, rows, found)`: for `found` = esper.get_components(Region, Kind), the index in it of
-    the first area under each awake body of `rows`, or -1."""
+    the first area under each awake body of `rows`, or -1; None when no body is on one (the usual
+    case, told without looking at the answer)."""
 
     def __init__(self) -> None:
         self._found: list | None = None
         self.areas = Areas.of([], [])
+        self._out = np.zeros(0, dtype=np.int64)
 
-    def under(self, state: np.ndarray, rows: np.ndarray, found: list) -> np.ndarray:
+    def under(self, state: np.ndarray, rows: np.ndarray, found: list) -> np.ndarray | None:
         if found is not self._found:
             self.areas = Areas.of([region.outline for _, (region, _) in found],
                                   [region.aabb for _, (region, _) in found])
             self._found = found
-        out = np.empty(len(rows), dtype=np.int64)
-        if len(found):
-            first_area(state, rows, self.areas.verts, self.areas.first, self.areas.boxes, out)
-        else:
-            out[:] = -1
-        return out
+        if len(self._out) != len(rows):
+            self._out = np.empty(len(rows), dtype=np.int64)
+        if not first_area(state, rows, self.areas.verts, self.areas.first, self.areas.boxes, self._out):
+            return None
+        return self._out

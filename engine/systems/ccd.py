@@ -5,9 +5,8 @@ import numpy as np
 
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
-from polygolf.engine.physics.body import ASLEEP, INV_MASS, SPIN, X0, Y0, X, Y
 from polygolf.engine.physics.collide import NO_SEAMS, max_separation
-from polygolf.engine.physics.grid import BoxGrid, box_pairs
+from polygolf.engine.physics.grid import body_pairs
 from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP, TOI_TARGET
 from polygolf.engine.physics.toi import first_pair_hit, first_wall_hits
 
@@ -37,15 +36,17 @@ class CCDProcessor(esper.Processor):
         state = self.bodies.gather(esper.get_component(Body))
         rows = self.shapes.rows(self.bodies, bodies)
         walls = self.statics.pieces
-        hits, longest = first_wall_hits(
+        hits, longest, count = first_wall_hits(
             table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
             state, rows, self.shapes.radius, LINEAR_SLOP, self.statics.grid.arrays, self._seen, self._found,
             walls.verts, walls.normals, walls.first, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP)
-        hit = np.flatnonzero(hits < 1.0)
-        first = dict(zip(self.shapes.ents[hit].tolist(), hits[hit].tolist())) if len(hit) else {}
+        first: dict[int, float] = {}
+        if count:
+            hit = np.flatnonzero(hits < 1.0)
+            first = dict(zip(self.shapes.ents[hit].tolist(), hits[hit].tolist()))
         # No pair can need sweeping while no body steps half the linear slop.
         if len(bodies) > 1 and longest >= 0.5 * LINEAR_SLOP:
-            self._body_hits(bodies, state[rows], first)
+            self._body_hits(rows, first)
         for ent, t in first.items():
             body = esper.component_for_entity(ent, Body)
             s = body.scratch
@@ -94,24 +95,11 @@ class CCDProcessor(esper.Processor):
                     return True
         return False
 
-    def _body_hits(self, bodies: list, state: np.ndarray, first: dict[int, float]) -> None:
+    def _body_hits(self, rows: np.ndarray, first: dict[int, float]) -> None:
         """Pairs of bodies whose swept boxes overlap and that move fast relative to each other."""
         meet = self.config.collide_bodies
-        ents = self.shapes.ents
-        swept = _swept(state, self.shapes.radius)
-        dynamic = state[:, INV_MASS] != 0.0
-        if meet:
-            active = ((state[:, ASLEEP] == 0.0) & dynamic) | (~dynamic & (state[:, SPIN] != 0.0))
-            pairs = ents[box_pairs(swept, active)]
-        else:  # bodies meet kinematic ones only: index those, look each moving body up (K shots: no K²)
-            kinematic = np.flatnonzero(~dynamic)
-            moving = np.flatnonzero(dynamic & (state[:, ASLEEP] == 0.0))
-            pairs = np.zeros((0, 2), dtype=np.int64)
-            if len(kinematic) and len(moving):
-                found_first, found = BoxGrid(swept[kinematic], self.statics.grid.cell_size).query_many(swept[moving])
-                pairs = np.stack((np.repeat(ents[moving], found_first[1:] - found_first[:-1]),
-                                  ents[kinematic[found]]), axis=1)
-        candidates = [(a, b) for a, b in np.sort(pairs.reshape(-1, 2), axis=1).tolist()]
+        found = body_pairs(self.bodies.state, rows, self.shapes.radius, TOI_TARGET, True, meet, True)
+        candidates = [(a, b) if a < b else (b, a) for a, b in self.shapes.ents[found].tolist()]
         for ea, eb in sorted(candidates):
             a, col_a = esper.component_for_entity(ea, Body), esper.component_for_entity(ea, Collider)
             b, col_b = esper.component_for_entity(eb, Body), esper.component_for_entity(eb, Collider)
@@ -147,15 +135,6 @@ def _start(body: Body) -> np.ndarray:
 
 def _end(body: Body) -> np.ndarray:
     return np.array((body.x, body.y, body.angle))
-
-
-def _swept(state: np.ndarray, radius: np.ndarray) -> np.ndarray:
-    """The box each body's motion this substep sweeps (rows of `state`, their bounding radii), grown
-    by the impact distance."""
-    r = radius + TOI_TARGET
-    x0, y0, x, y = state[:, X0], state[:, Y0], state[:, X], state[:, Y]
-    return np.stack((np.minimum(x0, x) - r, np.minimum(y0, y) - r, np.maximum(x0, x) + r, np.maximum(y0, y) + r),
-                    axis=1)
 
 
 def _moving(body: Body) -> bool:

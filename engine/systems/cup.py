@@ -17,22 +17,27 @@ class CupProcessor(esper.Processor):
     def __init__(self, res: Resources) -> None:
         self.events, self.bodies = res.events, res.bodies
         self._balls = Selection()
+        self._cups: list | None = None
+        self._packed = np.zeros((0, 4))
+        self._caught = np.zeros(0, dtype=np.int64)
 
     def process(self) -> None:
         cups = esper.get_component(Cup)
-        if not cups:
-            return
+        if cups is not self._cups:
+            self._packed = np.array([(c.x, c.y, c.radius, c.max_speed) for _, c in cups], dtype=np.float64)
+            self._cups = cups
         state = self.bodies.gather(esper.get_component(Body))
         balls = esper.get_components(Body, Ball)
         rows = self._balls.of(self.bodies, balls)
-        caught = np.empty(len(rows), dtype=np.int64)
-        captured(state, rows, np.array([(c.x, c.y, c.radius, c.max_speed) for _, c in cups], dtype=np.float64),
-                 caught)
-        for q in np.flatnonzero(caught >= 0).tolist():
+        if len(self._caught) != len(rows):
+            self._caught = np.empty(len(rows), dtype=np.int64)
+        if not cups or not captured(state, rows, self._packed.reshape(-1, 4), self._caught):
+            return
+        for q in np.flatnonzero(self._caught >= 0).tolist():
             ent, (body, ball) = balls[q]
             if ball.holed:
                 continue
-            cup = cups[caught[q]][1]
+            cup = cups[self._caught[q]][1]
             ball.holed = True
             body.x, body.y = cup.x, cup.y
             body.rest()

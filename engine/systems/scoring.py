@@ -3,7 +3,8 @@ import numpy as np
 
 from polygolf.engine.components import Ball, Body, Collider, HoleState
 from polygolf.engine.components.resources import Resources
-from polygolf.engine.physics.body import ASLEEP, Selection
+from polygolf.engine.physics.body import Selection
+from polygolf.engine.physics.motion import came_to_rest
 
 
 class ScoringProcessor(esper.Processor):
@@ -20,36 +21,38 @@ class ScoringProcessor(esper.Processor):
     def __init__(self, res: Resources) -> None:
         self.events, self.bodies = res.events, res.bodies
         self._balls = Selection()
-        self._was_asleep = np.zeros(0, dtype=np.bool_)
+        self._was_asleep = np.zeros(0, dtype=np.bool_)  # each ball's rest as last seen (now, after a look)
+        self._rested = np.zeros(0, dtype=np.int64)
 
     def process(self) -> None:
         fired, self.events.fired = self.events.fired, []
         for kind, ent, amount in fired:
-            state = esper.try_component(ent, HoleState)
-            if state is None or state.finished:
+            hole = esper.try_component(ent, HoleState)
+            if hole is None or hole.finished:
                 continue
             if kind == "shot":
-                state.strokes += 1
+                hole.strokes += 1
             elif kind == "penalty":
-                state.penalties += amount
+                hole.penalties += amount
             elif kind == "holed":
-                state.holed = True
+                hole.holed = True
         state = self.bodies.gather(esper.get_component(Body))
         balls = esper.get_components(Body, Ball, HoleState)
         known = self._balls.rows
         rows = self._balls.of(self.bodies, balls)
-        asleep = state[rows, ASLEEP] != 0.0
-        if rows is not known or len(self._was_asleep) != len(rows):
-            look = range(len(rows))  # new entities: look at every ball once
+        if rows is not known or len(self._was_asleep) != len(rows):  # new entities: look at every ball once
+            self._was_asleep = np.zeros(len(rows), dtype=np.bool_)
+            self._rested = np.empty(len(rows), dtype=np.int64)
+            came_to_rest(state, rows, self._was_asleep, self._rested)
+            look: list[int] = list(range(len(rows)))
         else:
-            named = {ent for _, ent, _ in fired}
-            look = sorted({*np.flatnonzero(asleep & ~self._was_asleep).tolist(),
-                           *(q for q, (ent, _) in enumerate(balls) if ent in named)}) if named else \
-                np.flatnonzero(asleep & ~self._was_asleep).tolist()
-        self._was_asleep = asleep
+            look = self._rested[:came_to_rest(state, rows, self._was_asleep, self._rested)].tolist()
+            if fired:
+                named = {ent for _, ent, _ in fired}
+                look = sorted({*look, *(q for q, (ent, _) in enumerate(balls) if ent in named)})
         for q in look:
             ent, (_, _, hole) = balls[q]
-            if not hole.finished and hole.score >= hole.max_strokes and asleep[q]:
+            if not hole.finished and hole.score >= hole.max_strokes and self._was_asleep[q]:
                 hole.picked_up = True
             if hole.finished and esper.has_component(ent, Collider):
                 esper.remove_component(ent, Collider)

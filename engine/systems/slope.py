@@ -23,7 +23,7 @@ class SlopeProcessor(esper.Processor):
         rows = self._balls.of(self.bodies, esper.get_components(Body, Ball))
         zones = esper.get_components(Region, Slope)
         on = self._slopes.under(state, rows, zones)
-        pushed = on >= 0
-        if pushed.any():
+        if on is not None:
+            pushed = on >= 0
             push = np.array([slope.push for _, (_, slope) in zones], dtype=np.float64)[on[pushed]]
             accelerate(state, rows[pushed], push[:, 0].copy(), push[:, 1].copy(), self.config.dt)

@@ -23,7 +23,7 @@ class SurfaceProcessor(esper.Processor):
         rows = self._balls.of(self.bodies, esper.get_components(Body, Drag, Ball))
         zones = esper.get_components(Region, self.marker)
         on = self._areas.under(state, rows, zones)
-        found = on >= 0
-        if found.any():
+        if on is not None:
+            found = on >= 0
             scales = np.array([surface.drag_scale for _, (_, surface) in zones], dtype=np.float64)
             state[rows[found], DRAG_SCALE] = scales[on[found]]

@@ -24,7 +24,7 @@ class WaterProcessor(esper.Processor):
         balls = esper.get_components(Body, Ball)
         zones = esper.get_components(Region, Water)
         on = self._areas.under(state, self._balls.of(self.bodies, balls), zones)
-        for q in np.flatnonzero(on >= 0).tolist():
+        for q in np.flatnonzero(on >= 0).tolist() if on is not None else ():
             ent, (body, ball) = balls[q]
             water = zones[on[q]][1][1]
             own = esper.try_component(ent, Collider)

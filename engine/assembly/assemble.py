@@ -3,6 +3,7 @@ entities and only the stages (from the one stage table) that its effects call fo
 
 from __future__ import annotations
 
+import functools
 import itertools
 from collections.abc import Iterable, Sequence
 
@@ -18,7 +19,7 @@ from polygolf.engine.components.resources import Resources, StaticWorld, StepCon
 from polygolf.engine.physics import polygon
 from polygolf.engine.physics.geometry import ConvexSet
 from polygolf.engine.physics.grid import BoxGrid
-from polygolf.engine.physics.mass import mass_properties
+from polygolf.engine.physics.mass import MassProperties, mass_properties
 from polygolf.engine.physics.presets import DEFAULT_PRESET, PRESETS, Knobs, preset
 from polygolf.engine.physics.seams import PROBE, covered_features
 
@@ -27,24 +28,35 @@ _world_ids = itertools.count(1)
 
 def make_collider(outline: polygon.Outline, material: Material) -> Collider:
     """Collider of a normalised outline (CCW, centroid at the origin)."""
+    shape, radius, thickness = _collider_geometry(tuple(outline))
+    return Collider(outline=tuple(outline), shape=shape, radius=radius, material=material, thickness=thickness)
+
+
+@functools.lru_cache(maxsize=256)
+def _collider_geometry(outline: polygon.Outline) -> tuple[ConvexSet, float, float]:
+    """Convex pieces, bounding radius and thinnest width of an outline, worked out once per shape
+    (a search puts a thousand balls of one shape in a world; a `ConvexSet` is never changed)."""
     pieces = tuple(polygon.convex_pieces(outline))
-    return Collider(
-        outline=tuple(outline), shape=ConvexSet.of(pieces, [polygon.edge_normals(p) for p in pieces]),
-        radius=polygon.bounding_radius(outline), material=material,
-        thickness=min(polygon.min_width(p) for p in pieces),
-    )
+    return (ConvexSet.of(pieces, [polygon.edge_normals(p) for p in pieces]), polygon.bounding_radius(outline),
+            min(polygon.min_width(p) for p in pieces))
 
 
 def make_body(outline: polygon.Outline, position: Sequence[float], density: float, angle: float = 0.0,
               velocity: Sequence[float] = (0.0, 0.0), spin: float = 0.0, rotates: bool = True) -> Body:
     """Dynamic body with the exact mass and inertia of its outline. `rotates=False` (no `spin`
     effect) gives infinite inertia: contacts then cannot turn it."""
-    props = mass_properties(outline, density)
+    props = _mass_properties(tuple(outline), density)
     body = Body.dynamic(float(position[0]), float(position[1]), props.mass, props.inertia,
                         angle=angle, vx=float(velocity[0]), vy=float(velocity[1]), spin=spin if rotates else 0.0)
     if not rotates:
         body.inv_inertia = 0.0
     return body
+
+
+@functools.lru_cache(maxsize=256)
+def _mass_properties(outline: polygon.Outline, density: float) -> MassProperties:
+    """`mass_properties`, once per shape and density (the answer is frozen)."""
+    return mass_properties(outline, density)
 
 
 def make_wall(outline: Sequence[polygon.Vec], material: Material) -> Wall:

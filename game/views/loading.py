@@ -1,16 +1,18 @@
 """The first screen: the physics engine's compiled kernels made ready, with a bar, before anything
 steps physics.
 
-A first launch compiles them (seconds, `game.startup`); later launches load them from numba's cache
-in a fraction of a second and this screen is gone after a frame or two. The warm-up steps run in
-`on_update`, as many as fit in FRAME_BUDGET but at least one, and only after a frame has been drawn
-since the last: the window shows the bar and the step being compiled between two long steps (it does
-not answer while one runs; none takes more than a few seconds). Started from a terminal, the same
-compile also shows as the command line's one stderr line (`startup.ConsoleProgress`).
+A first launch compiles them (half a minute, `game.startup`); later launches load them from numba's
+cache in a fraction of a second and this screen is gone as soon. The warm-up steps run one after the
+other on a thread of their own, started once the screen has been drawn, while the window goes on
+drawing and answering (numba's compiler is Python and LLVM: the window's thread gets the interpreter
+every few milliseconds; a frame is seldom late by more than a quarter of a second). Nothing else
+steps physics until they are done. Started from a terminal, the same compile also shows as the
+command line's one stderr line (`startup.ConsoleProgress`).
 """
 
 from __future__ import annotations
 
+import threading
 import time
 from collections.abc import Callable, Sequence
 
@@ -22,7 +24,6 @@ from polygolf.game.views.navigation import window_key
 from polygolf.game.views.widgets import title
 
 BAR = (560, 22)  # pixels, as the Random nine build's
-FRAME_BUDGET = 0.05  # s of warm-up steps in one frame: cached steps take milliseconds, all go in one
 
 Step = tuple[str, Callable[[], None]]
 
@@ -39,9 +40,11 @@ class LoadingView(arcade.View):
         self.then = then
         self.steps = list(steps)
         self.console = console if console is not None else ConsoleProgress()
-        self.done = 0  # steps run
-        self.drawn = False  # a frame drawn since the last steps ran
+        self.done = 0  # steps run (written by the warm-up thread)
+        self.drawn = False  # a frame has been drawn: the warm-up may start
         self.finished = False
+        self.error: BaseException | None = None  # what stopped the warm-up thread, raised on the window's
+        self._worker: threading.Thread | None = None
         self.started = time.perf_counter()
         theme = game.theme
         self.background_color = theme.rgba("background")
@@ -62,25 +65,30 @@ class LoadingView(arcade.View):
     def on_update(self, delta_time: float) -> None:
         if self.finished or not self.drawn:
             return  # the screen is drawn before the first step, which may take seconds
-        began, total = time.perf_counter(), len(self.steps)
+        if self._worker is None:
+            self._worker = threading.Thread(target=self._warm_up, name="warm-up", daemon=True)
+            self._worker.start()
+        if self._worker.is_alive():
+            return
+        self._worker.join()
+        self.finished = True
+        self.console.close()
+        if self.error is not None:
+            raise self.error
+        self.then()
+
+    def _warm_up(self) -> None:
+        """Every step in order, on the warm-up thread."""
+        total = len(self.steps)
         try:
             with watching_compiles(self.console):
-                while self.done < total:
-                    label, warm = self.steps[self.done]
+                for label, warm in self.steps:
                     self.console(self.done, total, label)
                     warm()
                     self.done += 1
-                    if time.perf_counter() - began > FRAME_BUDGET:
-                        break
-        except BaseException:
-            self.console.close()
-            raise
-        self.drawn = False
-        if self.done == total:
-            self.finished = True
             self.console(total, total, "ready")
-            self.console.close()
-            self.then()
+        except BaseException as error:  # noqa: BLE001 - handed to the window's thread, raised there
+            self.error = error
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:
         window_key(self.window, self.game, symbol)

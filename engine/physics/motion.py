@@ -168,6 +168,29 @@ def kinetic_energy(state: np.ndarray) -> tuple[float, bool]:
 
 
 @kernel
+def rewind(state: np.ndarray, rows: np.ndarray, hits: np.ndarray) -> int:
+    """Each body q of `rows` with hits[q] < 1 goes back to that fraction of its motion this substep
+    (continuous collision's time of impact). A dynamic body owes the rest of its motion's time
+    (`lag`, made up in the next substep); a kinematic one (a stalled windmill) stands still for the
+    solve and owes nothing. Returns how many went back."""
+    count = 0
+    for q in range(rows.shape[0]):
+        t = hits[q]
+        if not t < 1.0:
+            continue
+        k = rows[q]
+        state[k, X] = state[k, X0] + t * (state[k, X] - state[k, X0])
+        state[k, Y] = state[k, Y0] + t * (state[k, Y] - state[k, Y0])
+        state[k, ANGLE] = state[k, ANGLE0] + t * (state[k, ANGLE] - state[k, ANGLE0])
+        if state[k, INV_MASS] != 0.0:
+            state[k, LAG] = (1.0 - t) * state[k, MOVED_FOR]
+        else:
+            state[k, SPIN] = 0.0
+        count += 1
+    return count
+
+
+@kernel
 def came_to_rest(state: np.ndarray, rows: np.ndarray, was_asleep: np.ndarray, out: np.ndarray) -> int:
     """The bodies of `rows` (indices into it, into `out`) at rest now that were not when `was_asleep`
     was last updated (it is, here). Returns how many."""
@@ -196,3 +219,4 @@ def _warm() -> None:
     captured(state, rows, np.array([[0.0, 0.0, 1.0, 2.0]]), np.empty(2, dtype=np.int64))
     kinetic_energy(state)
     came_to_rest(state, rows, np.zeros(2, dtype=np.bool_), np.empty(2, dtype=np.int64))
+    rewind(state, rows, np.array([0.5, 1.0]))

@@ -7,6 +7,7 @@ from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.collide import NO_SEAMS, max_separation
 from polygolf.engine.physics.grid import body_pairs
+from polygolf.engine.physics.motion import rewind
 from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP, TOI_TARGET
 from polygolf.engine.physics.toi import first_pair_hit, first_wall_hits
 
@@ -40,25 +41,11 @@ class CCDProcessor(esper.Processor):
             table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
             state, rows, self.shapes.radius, LINEAR_SLOP, self.statics.grid.arrays, self._seen, self._found,
             walls.verts, walls.normals, walls.first, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP)
-        first: dict[int, float] = {}
-        if count:
-            hit = np.flatnonzero(hits < 1.0)
-            first = dict(zip(self.shapes.ents[hit].tolist(), hits[hit].tolist()))
         # No pair can need sweeping while no body steps half the linear slop.
         if len(bodies) > 1 and longest >= 0.5 * LINEAR_SLOP:
-            self._body_hits(rows, first)
-        for ent, t in first.items():
-            body = esper.component_for_entity(ent, Body)
-            s = body.scratch
-            body.x = s.x0 + t * (body.x - s.x0)
-            body.y = s.y0 + t * (body.y - s.y0)
-            body.angle = s.angle0 + t * (body.angle - s.angle0)
-            if body.inv_mass:
-                # The motion covered (dt + lag) this substep; the part after the impact is owed.
-                s.lag = (1.0 - t) * s.moved_for
-            else:
-                body.spin = 0.0  # a stalled windmill: still, for the solve too; it owes nothing
-            self.stats.toi_hits += 1
+            count += self._body_hits(rows, hits)
+        if count:
+            self.stats.toi_hits += rewind(state, rows, hits)
 
     def _pinched(self, body: Body, col: Collider, arm: Body, arm_col: Collider, t: float) -> bool:
         """Whether the arm, meeting the body at fraction `t` of the substep, drives it into a wall it
@@ -95,9 +82,12 @@ class CCDProcessor(esper.Processor):
                     return True
         return False
 
-    def _body_hits(self, rows: np.ndarray, first: dict[int, float]) -> None:
-        """Pairs of bodies whose swept boxes overlap and that move fast relative to each other."""
+    def _body_hits(self, rows: np.ndarray, hits: np.ndarray) -> int:
+        """Pairs of bodies whose swept boxes overlap and that move fast relative to each other: each
+        one's earliest impact goes into `hits` (by its index in `rows`). Returns how many pairs hit."""
         meet = self.config.collide_bodies
+        index = self.shapes.of(esper.get_components(Body, Collider))[1]
+        count = 0
         found = body_pairs(self.bodies.state, rows, self.shapes.radius, TOI_TARGET, True, meet, True)
         candidates = [(a, b) if a < b else (b, a) for a, b in self.shapes.ents[found].tolist()]
         for ea, eb in sorted(candidates):
@@ -118,14 +108,16 @@ class CCDProcessor(esper.Processor):
             hit = first_pair_hit(sa.verts, sa.normals, sa.first, sa.reach, _start(a), _end(a), sb.verts, sb.normals,
                                  sb.first, sb.reach, _start(b), _end(b), TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP)
             if hit < 1.0:
+                count += 1
                 for ent, body in ((ea, a), (eb, b)):
                     if body.inv_mass and not body.asleep:
-                        first[ent] = min(first.get(ent, 1.0), hit)
+                        hits[index[ent]] = min(hits[index[ent]], hit)
                 if kinematic_pair:
                     (arm, arm_ent, arm_col), (ball, col) = (((a, ea, col_a), (b, col_b)) if not a.inv_mass
                                                             else ((b, eb, col_b), (a, col_a)))
                     if self._pinched(ball, col, arm, arm_col, hit):
-                        first[arm_ent] = min(first.get(arm_ent, 1.0), hit)
+                        hits[index[arm_ent]] = min(hits[index[arm_ent]], hit)
+        return count
 
 
 def _start(body: Body) -> np.ndarray:

@@ -13,8 +13,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from polygolf.engine.loading.scene import Scene, build_scene
-from polygolf.engine.physics.settings import LINEAR_SLOP
 from polygolf.engine.physics.motion import decay
+from polygolf.engine.physics.settings import LINEAR_SLOP
 
 from .conftest import PRESET_NAMES
 from .helpers import scene_sim

@@ -624,13 +624,19 @@ def solve(table: ContactTable, knobs: Knobs, dt: float, friction: bool) -> int:
 
 
 @kernel
-def _restitution(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray, points: np.ndarray,
-                 threshold: float) -> int:
-    """`apply_restitution` over packed arrays (as `solve_contacts` takes them)."""
+def _body_row(state: np.ndarray, static: np.ndarray, k: int) -> np.ndarray:
+    """Body row k of a table's bodies: the store's `state`, and past its end the static world's row."""
+    return static if k == state.shape[0] else state[k]
+
+
+@kernel
+def _restitution(state: np.ndarray, static: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray,
+                 points: np.ndarray, threshold: float) -> int:
+    """`apply_restitution` on a table's arrays and its bodies' rows, in place."""
     bounced = 0
     for k in range(pair.shape[0]):
         nx, ny = normals[k, M_NX], normals[k, M_NY]
-        a, b = pair[k, 0], pair[k, 1]
+        a, b = _body_row(state, static, pair[k, 0]), _body_row(state, static, pair[k, 1])
         for p in range(first[k], first[k + 1]):
             if points[p, P_APPROACH] >= -threshold or points[p, P_NORMAL_IMPULSE] <= 0.0 \
                     or points[p, P_RESTITUTION] <= 0.0:
@@ -638,12 +644,12 @@ def _restitution(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, firs
             e = points[p, P_RESTITUTION]
             jn, jt = e * points[p, P_NORMAL_IMPULSE], e * points[p, P_TANGENT_IMPULSE]
             px, py = jn * nx + jt * ny, jn * ny - jt * nx
-            bodies[a, B_VX] -= bodies[a, B_INV_MASS] * px
-            bodies[a, B_VY] -= bodies[a, B_INV_MASS] * py
-            bodies[a, B_SPIN] -= bodies[a, B_INV_INERTIA] * (points[p, P_RA_X] * py - points[p, P_RA_Y] * px)
-            bodies[b, B_VX] += bodies[b, B_INV_MASS] * px
-            bodies[b, B_VY] += bodies[b, B_INV_MASS] * py
-            bodies[b, B_SPIN] += bodies[b, B_INV_INERTIA] * (points[p, P_RB_X] * py - points[p, P_RB_Y] * px)
+            a[B_VX] -= a[B_INV_MASS] * px
+            a[B_VY] -= a[B_INV_MASS] * py
+            a[B_SPIN] -= a[B_INV_INERTIA] * (points[p, P_RA_X] * py - points[p, P_RA_Y] * px)
+            b[B_VX] += b[B_INV_MASS] * px
+            b[B_VY] += b[B_INV_MASS] * py
+            b[B_SPIN] += b[B_INV_INERTIA] * (points[p, P_RB_X] * py - points[p, P_RB_Y] * px)
             # The impact is over: nothing of it should be warm-started into the next substep.
             points[p, P_NORMAL_IMPULSE] = points[p, P_TANGENT_IMPULSE] = 0.0
             bounced += 1
@@ -652,15 +658,13 @@ def _restitution(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, firs
 
 def apply_restitution(table: ContactTable, threshold: float) -> int:
     """Poisson restitution: every point that was approaching faster than `threshold` gets e times
-    its compression impulse again. Returns how many points bounced. Runs after `solve`; in most
-    substeps nothing approached, and then the bodies are not packed at all."""
+    its compression impulse again. Returns how many points bounced. Runs after `solve`, on the
+    bodies' rows themselves (most substeps have no impact, and then not even that)."""
     points = table.points
     if (points[:, P_APPROACH] >= -threshold).all():
         return 0  # every point resting: nothing bounces
-    bodies = table.packed_bodies()
-    bounced = _restitution(bodies, table.normals, table.pair, table.first, points, threshold)
-    table.write_back(bodies)
-    return bounced
+    return _restitution(table.store.state, table.static._row, table.normals, table.pair, table.first, points,
+                        threshold)
 
 
 @warm_up("contact solver")

@@ -33,6 +33,7 @@ class NarrowphaseProcessor(esper.Processor):
         self.config, self.candidates, self.contacts = res.config, res.candidates, res.contacts
         self.statics, self.stats = res.statics, res.stats
         self.shapes, self.bodies = res.shapes, res.bodies
+        self._empty = ContactTable.empty()
 
     def process(self) -> None:
         knobs, dt = self.config.knobs, self.config.dt
@@ -100,8 +101,8 @@ class NarrowphaseProcessor(esper.Processor):
                         np.array([(col_a.material.restitution, col_a.material.friction, col_b.material.restitution,
                                    col_b.material.friction) for *_, col_a, col_b in kept], dtype=np.float64))
 
-        if walls is _NO_WALLS and pair_groups is _NO_PAIRS:
-            self.contacts.table = ContactTable.empty()
+        if not len(walls[0]) and pair_groups is _NO_PAIRS:
+            self.contacts.table = self._empty  # nothing touches: no kernel call (most substeps of a lone ball)
             return
         statics = self.statics
         made = build_contacts(*walls, statics.materials, statics.owner, statics.index, *pair_groups, state,

@@ -13,8 +13,8 @@ import pytest
 
 from polygolf.engine.loading.scene import Scene, build_scene
 from polygolf.engine.physics import solver
-from polygolf.engine.physics.body import Body
-from polygolf.engine.physics.contact import ContactPoint, Manifold
+from polygolf.engine.physics.body import Body, BodyStore
+from polygolf.engine.physics.contact import ContactPoint, Manifold, table_of
 from polygolf.engine.physics.jit import KERNEL_MODULES, kernel_steps
 from polygolf.engine.physics.presets import PRESETS, Knobs
 
@@ -57,6 +57,17 @@ def _box_on_box(below: Body, carried: float) -> Manifold:
     return Manifold(2, 3, below, box, 0.0, 1.0, points)
 
 
+def _solve(manifolds: list[Manifold], knobs: Knobs, dt: float) -> tuple[int, list[Manifold]]:
+    """`solver.solve` on hand-made manifolds, their dynamic bodies gathered into a store of their own
+    and the static manifolds' body B the static world: the cold restarts, and the manifolds solved."""
+    static = next(m.body_b for m in manifolds if m.entity_b == -1)
+    bodies = {id(b): b for m in manifolds for b in (m.body_a, m.body_b) if b is not static}
+    store = BodyStore()
+    store.gather(list(enumerate(bodies.values())))
+    table = table_of(manifolds, store, static)
+    return solver.solve(table, knobs, dt, True), table.manifolds()
+
+
 def _state(manifolds: list[Manifold]) -> list:
     out = []
     for m in manifolds:
@@ -78,17 +89,20 @@ def test_a_body_solves_the_same_alone_as_beside_an_island_it_never_meets(name):
     stack = [resting, _box_on_box(resting.body_a, carried=2.0)]
     alone_moving, alone_stack = copy.deepcopy([moving]), copy.deepcopy(stack)
     cold_moving = copy.deepcopy([moving])
-    assert solver.solve([moving, *stack], knobs, dt, True) == 1  # one island restarted cold
-    assert solver.solve(alone_moving, knobs, dt, True) == 0
-    assert solver.solve(alone_stack, knobs, dt, True) == 1
-    assert _state([moving, *stack]) == _state(alone_moving + alone_stack)
+    restarts, solved = _solve([moving, *stack], knobs, dt)
+    assert restarts == 1  # one island restarted cold
+    restarts, solved_moving = _solve(alone_moving, knobs, dt)
+    assert restarts == 0
+    restarts, solved_stack = _solve(alone_stack, knobs, dt)
+    assert restarts == 1
+    assert _state(solved) == _state(solved_moving + solved_stack)
     for p in cold_moving[0].points:
         p.normal_impulse = p.tangent_impulse = 0.0
-    solver.solve(cold_moving, knobs, dt, True)
-    assert _state(cold_moving) != _state(alone_moving)  # so a shared restart would have shown
-    assert all(m.block for m in (moving, *stack))  # flat faces: two points solved together
+    _, solved_cold = _solve(cold_moving, knobs, dt)
+    assert _state(solved_cold) != _state(solved_moving)  # so a shared restart would have shown
+    assert all(m.block for m in solved)  # flat faces: two points solved together
     assert moving.body_a.vy == pytest.approx(0.0, abs=1e-9)  # plastic: the fall is stopped
-    assert all(p.normal_impulse > 0.0 and p.approach_speed < 0.0 for p in moving.points)
+    assert all(p.normal_impulse > 0.0 and p.approach_speed < 0.0 for p in solved[0].points)
     for box in (stack[0].body_a, stack[1].body_b):  # cold, the stack stays at rest
         assert (box.vx, box.vy, box.spin) == (0.0, 0.0, 0.0)
     assert (ground.vx, ground.vy, ground.spin) == (0.0, 0.0, 0.0)

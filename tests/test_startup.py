@@ -29,11 +29,13 @@ from .test_screens import window  # noqa: F401  (the one test window)
 
 ROOT = Path(__file__).resolve().parent.parent
 SCENE = SCENES_DIR / "flat-wall.yaml"
-# The physics tests run again interpreted: the kernels of collide.py, toi.py, geometry.py, grid.py,
-# motion.py and solver.py line by line, directly (test_collide, test_grid, test_bodies, test_solver)
-# and through the pipeline (hard cases, systems, random shapes in a box, parallel shots on holes).
-INTERPRETED = ["tests/test_collide.py", "tests/test_hard_cases.py", "tests/test_systems.py", "tests/test_grid.py",
-               "tests/test_property.py", "tests/test_shots.py", "tests/test_solver.py", "tests/test_bodies.py"]
+# The physics tests run again interpreted: the kernels of collide.py, contact.py, toi.py, geometry.py,
+# grid.py, motion.py and solver.py line by line, directly (test_collide, test_contact, test_grid,
+# test_bodies, test_solver) and through the pipeline (hard cases, systems, random shapes in a box,
+# parallel shots on holes).
+INTERPRETED = ["tests/test_collide.py", "tests/test_contact.py", "tests/test_hard_cases.py", "tests/test_systems.py",
+               "tests/test_grid.py", "tests/test_property.py", "tests/test_shots.py", "tests/test_solver.py",
+               "tests/test_bodies.py"]
 
 
 class Terminal(io.StringIO):

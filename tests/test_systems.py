@@ -11,7 +11,7 @@ import pytest
 from polygolf.engine.assembly.assemble import make_body, make_collider
 from polygolf.engine.components import Body, Drag, Material
 from polygolf.engine.physics import polygon
-from polygolf.engine.physics.contact import ContactPoint, Manifold
+from polygolf.engine.physics.contact import P_NORMAL_IMPULSE, P_TANGENT_IMPULSE, ContactPoint, Manifold, table_of
 from polygolf.engine.physics.settings import TIME_TO_REST, TOI_TARGET
 from polygolf.engine.systems.broadphase import BroadphaseProcessor
 from polygolf.engine.systems.ccd import CCDProcessor
@@ -161,22 +161,29 @@ def test_narrowphase_carries_impulses_of_persisting_points(world):
     ctx.candidates.walls = {ent: np.array([0])}  # the first wall's only piece
     esper.add_processor(NarrowphaseProcessor(ctx))
     esper.process()
-    for p in ctx.contacts.manifolds[0].points:
-        p.normal_impulse, p.tangent_impulse = 1.5, -0.25
+    ctx.contacts.table.points[:, P_NORMAL_IMPULSE] = 1.5  # as if the solver had pushed there
+    ctx.contacts.table.points[:, P_TANGENT_IMPULSE] = -0.25
     esper.process()
     assert [(p.normal_impulse, p.tangent_impulse) for p in ctx.contacts.manifolds[0].points] == [(1.5, -0.25)] * 2
 
 
-def one_point_manifold(body, px, py, nx, ny, static, separation=0.0, restitution=0.5, friction=0.0):
-    point = ContactPoint(x=px, y=py, separation=separation, key=(0,), restitution=restitution, friction=friction)
+def one_point_manifold(body, px, py, nx, ny, static, separation=0.0, restitution=0.5, friction=0.0, **solved):
+    point = ContactPoint(x=px, y=py, separation=separation, key=(0,), restitution=restitution, friction=friction,
+                         **solved)
     return Manifold(entity_a=1, entity_b=-1, body_a=body, body_b=static, nx=nx, ny=ny, points=[point])
+
+
+def hand_made(ctx, *manifolds):
+    """The contact table of hand-made manifolds between the world's bodies and its static stand-in."""
+    ctx.bodies.gather(esper.get_component(Body))
+    return table_of(manifolds, ctx.bodies, ctx.statics.body)
 
 
 def test_resolve_stops_the_approach_of_a_central_hit(world):
     ctx = context()
     body = Body.dynamic(0.0, 0.0, 2.0, 0.5, vx=-3.0, vy=1.0)
     esper.create_entity(body)
-    ctx.contacts.manifolds = [one_point_manifold(body, -0.5, 0.0, -1.0, 0.0, ctx.statics.body)]
+    ctx.contacts.table = hand_made(ctx, one_point_manifold(body, -0.5, 0.0, -1.0, 0.0, ctx.statics.body))
     esper.add_processor(ResolveProcessor(ctx))
     esper.process()
     assert body.vx == pytest.approx(0.0, abs=1e-12)  # plastic: restitution is another processor
@@ -187,7 +194,8 @@ def test_resolve_friction_is_clamped_by_coulomb(world):
     ctx = context(effects={"friction"})
     body = Body.dynamic(0.0, 0.0, 1.0, 1e9, vx=-1.0, vy=5.0)  # huge inertia: a point mass
     esper.create_entity(body)
-    ctx.contacts.manifolds = [one_point_manifold(body, -0.5, 0.0, -1.0, 0.0, ctx.statics.body, friction=0.5)]
+    ctx.contacts.table = hand_made(ctx, one_point_manifold(body, -0.5, 0.0, -1.0, 0.0, ctx.statics.body,
+                                                           friction=0.5))
     esper.add_processor(ResolveProcessor(ctx))
     esper.process()
     # Normal impulse 1.0 stops vx; friction can take at most 0.5 of the 5.0 sideways.
@@ -199,7 +207,8 @@ def test_resolve_split_impulse_moves_position_but_not_velocity(world):
     ctx = context()
     body = Body.dynamic(0.0, 0.0, 1.0, 1.0)
     esper.create_entity(body)
-    ctx.contacts.manifolds = [one_point_manifold(body, -0.5, 0.0, -1.0, 0.0, ctx.statics.body, separation=-0.05)]
+    ctx.contacts.table = hand_made(ctx, one_point_manifold(body, -0.5, 0.0, -1.0, 0.0, ctx.statics.body,
+                                                           separation=-0.05))
     esper.add_processor(ResolveProcessor(ctx))
     esper.process()
     assert body.x > 0.0  # pushed out of the wall
@@ -210,16 +219,15 @@ def test_restitution_repeats_e_times_the_compression_impulse(world):
     ctx = context()
     body = Body.dynamic(0.0, 0.0, 2.0, 0.5, vx=0.0)
     esper.create_entity(body)
-    m = one_point_manifold(body, -0.5, 0.0, -1.0, 0.0, ctx.statics.body, restitution=0.6)
-    m.points[0].normal_impulse = 8.0  # what stopped a 4 m/s approach of a 2 kg body
-    m.points[0].approach_speed = -4.0
-    m.points[0].ra_x = -0.5
-    ctx.contacts.manifolds = [m]
+    # What stopped a 4 m/s approach of a 2 kg body.
+    m = one_point_manifold(body, -0.5, 0.0, -1.0, 0.0, ctx.statics.body, restitution=0.6, normal_impulse=8.0,
+                           approach_speed=-4.0, ra_x=-0.5)
+    ctx.contacts.table = hand_made(ctx, m)
     esper.add_processor(RestitutionProcessor(ctx))
     esper.process()
     assert body.vx == pytest.approx(0.6 * 4.0)
     assert ctx.stats.bounces == 1
-    assert m.points[0].normal_impulse == 0.0  # nothing of the impact is warm-started
+    assert ctx.contacts.manifolds[0].points[0].normal_impulse == 0.0  # nothing of the impact is warm-started
 
 
 def test_ccd_stops_a_body_at_its_time_of_impact(world):

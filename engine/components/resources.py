@@ -11,7 +11,7 @@ import numpy as np
 
 from polygolf.engine.components.wall import Wall
 from polygolf.engine.physics.body import Body, BodyStore, Selection
-from polygolf.engine.physics.contact import Carried, Manifold, persistent_impulses
+from polygolf.engine.physics.contact import ContactTable, Manifold
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable
 from polygolf.engine.physics.grid import BoxGrid
 from polygolf.engine.physics.presets import Knobs
@@ -36,14 +36,15 @@ class StepConfig:
 class StaticWorld:
     """The walls as one set of convex pieces in world coordinates, filed once at assembly: row for
     row with the vertices, the seams (physics.seams: `internal` edges, `hidden` vertices); per piece,
-    the wall entity it belongs to and its index there; a grid of the pieces' boxes. And the stand-in
-    body a wall contact pushes against."""
+    the wall entity it belongs to, its index there and that wall's material; a grid of the pieces'
+    boxes. And the stand-in body a wall contact pushes against."""
 
     pieces: ConvexSet
     internal: np.ndarray  # bool per vertex row: the edge starting there is covered
     hidden: np.ndarray  # bool per vertex row
     owner: np.ndarray  # int64 per piece: its wall entity
     index: np.ndarray  # int64 per piece: its index among that wall's pieces
+    materials: np.ndarray  # (pieces, 2) float64: its wall's restitution and friction
     grid: BoxGrid
     body: Body = field(default_factory=lambda: Body(x=0.0, y=0.0))
 
@@ -65,13 +66,16 @@ class StaticWorld:
         boxes = np.array([w.piece_aabbs[k] for _, w, k in found], dtype=np.float64).reshape(-1, 4)
         return cls(pieces=pieces, internal=rows("internal"), hidden=rows("hidden"),
                    owner=np.array([e for e, _, _ in found], dtype=np.int64),
-                   index=np.array([k for _, _, k in found], dtype=np.int64), grid=BoxGrid(boxes, cell_size))
+                   index=np.array([k for _, _, k in found], dtype=np.int64),
+                   materials=np.array([(w.material.restitution, w.material.friction) for _, w, _ in found],
+                                      dtype=np.float64).reshape(-1, 2),
+                   grid=BoxGrid(boxes, cell_size))
 
 
 @dataclass(slots=True)
 class Shapes:
     """Every body's convex pieces in one table (`geometry.ShapeTable`), so a stage can hand all
-    bodies to one kernel call, with each one's entity, bounding radius and thinnest width; built
+    bodies to one kernel call, with each one's entity, bounding radius, thinnest width and material; built
     again only when esper's list of bodies changes (a body or a collider added or taken away)."""
 
     _bodies: list | None = None
@@ -80,6 +84,7 @@ class Shapes:
     ents: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
     radius: np.ndarray = field(default_factory=lambda: np.zeros(0))
     thickness: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    materials: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))  # restitution, friction
     _selection: Selection = field(default_factory=Selection)
     _lookup: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
 
@@ -95,6 +100,8 @@ class Shapes:
             self.ents = np.array([ent for ent, _ in bodies], dtype=np.int64)
             self.radius = np.array([col.radius for _, (_, col) in bodies], dtype=np.float64)
             self.thickness = np.array([col.thickness for _, (_, col) in bodies], dtype=np.float64)
+            self.materials = np.array([(col.material.restitution, col.material.friction) for _, (_, col) in bodies],
+                                      dtype=np.float64).reshape(-1, 2)
             self._lookup = np.full(int(self.ents.max(initial=-1)) + 1, -1, dtype=np.int64)
             self._lookup[self.ents] = np.arange(len(self.ents))
             self._bodies = bodies
@@ -134,18 +141,24 @@ class Candidates:
 
 @dataclass(slots=True)
 class Contacts:
-    """Narrowphase -> resolve, restitution, bumper and rest detection: this substep's manifolds."""
+    """Narrowphase -> resolve, impacts, restitution, bumper and rest detection: this substep's
+    contacts (`contact.ContactTable`), left for the next substep's warm start."""
 
-    manifolds: list[Manifold] = field(default_factory=list)
-    touching: set[int] = field(default_factory=set)  # entities in this substep's manifolds
+    table: ContactTable = field(default_factory=ContactTable.empty)
 
-    def carried(self) -> Carried:
-        """What the last substep leaves for warm starting (see `contact.persistent_impulses`)."""
-        return persistent_impulses(self.manifolds)
+    @property
+    def manifolds(self) -> list[Manifold]:
+        """The table as objects, built on demand (tests and tools; the stages read the table)."""
+        return self.table.manifolds()
+
+    @property
+    def touching(self) -> set[int]:
+        """The entities in this substep's manifolds (-1: the static world)."""
+        return set(self.table.ents.ravel().tolist())
 
     @property
     def count(self) -> int:
-        return sum(len(m.points) for m in self.manifolds)
+        return len(self.table.points)
 
 
 @dataclass(slots=True)

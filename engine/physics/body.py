@@ -158,6 +158,15 @@ class BodyStore:
             self.state, self.rows, self._bodies = state, {ent: k for k, (ent, _) in enumerate(bodies)}, bodies
         return self.state
 
+    def handle(self, row: int) -> Body:
+        """The body whose row this is."""
+        return self._bodies[row][1]
+
+    @property
+    def bodies(self) -> list[Body]:
+        """Every body, row by row."""
+        return [body for _, body in self._bodies or ()]
+
 
 class Selection:
     """The rows (in a `BodyStore`) of the bodies an esper query found, e.g. those with a `Drag`;

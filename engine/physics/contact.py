@@ -1,23 +1,69 @@
-"""Contact manifolds between two bodies, merged across convex pieces.
+"""A substep's contacts as one table of arrays: manifolds between two bodies, merged across convex pieces.
 
 A non-convex body touches a wall through several convex pieces. Solving each piece's contact on its
 own is the original PolyGolf fault (a star landing flat on two tips got two full impulses). Here every
 point between the same two bodies that shares a normal goes into one manifold, reduced to the two
 points that span the contact, and the solver treats those two points as one block.
+
+`build_contacts` makes the table from the narrowphase's contact rows (`collide.ROW` columns) in one
+compiled call, `carry_impulses` warm-starts it from the last substep's table; the solver, the
+restitution phase, the bumper and the impacts stage read and write the same arrays. `ContactTable.manifolds`
+shows a table as `Manifold` objects (for tests and tools; the step never builds one), `table_of`
+makes a table of hand-made ones.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
-from polygolf.engine.physics.body import Body, Material
-from polygolf.engine.physics.collide import CLIP_X, CLIP_Y, FACE_X, FACE_Y, NX, NY, REF_IS_A, SEP, X, Y
+import numpy as np
+
+from polygolf.engine.physics.body import ANGLE as B_ANGLE
+from polygolf.engine.physics.body import COLUMNS, PUSH_SPIN, PUSH_X, SOLVER_COLUMNS, SPIN, Body, BodyStore
+from polygolf.engine.physics.body import X as B_X
+from polygolf.engine.physics.body import Y as B_Y
+from polygolf.engine.physics.collide import (
+    BODY,
+    CLIP_X,
+    CLIP_Y,
+    FACE_X,
+    FACE_Y,
+    FEATURE,
+    NX,
+    NY,
+    PIECE_A,
+    PIECE_B,
+    REF_IS_A,
+    ROW,
+    SEP,
+    X,
+    Y,
+)
+from polygolf.engine.physics.jit import kernel, warm_up
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 
 # Normals closer than this (cosine) are the same contact plane.
 SAME_NORMAL_COS = math.cos(math.radians(2.0))
+
+# Columns of a manifold row (`ContactTable.normals`): its normal (from A to B) and its block matrix
+# (the solver fills it for two-point manifolds).
+M_NX, M_NY, M_K11, M_K12, M_K22 = range(5)
+MANIFOLD_COLUMNS = 5
+# Columns of a point row (`ContactTable.points`): what the narrowphase made (P_X..P_FRICTION), the
+# solver's state (P_NORMAL_IMPULSE..P_APPROACH), the local geometry NGS reads (P_REF_IS_A..P_LQY: the
+# reference face's normal and a point on it in the reference body's frame, the incident point in
+# its body's frame) and the restitution.
+P_X, P_Y, P_SEP, P_FRICTION, P_NORMAL_IMPULSE, P_TANGENT_IMPULSE, P_PUSH_IMPULSE, P_RA_X, P_RA_Y, P_RB_X, P_RB_Y, \
+    P_NORMAL_MASS, P_TANGENT_MASS, P_APPROACH, P_REF_IS_A, P_LNX, P_LNY, P_LFX, P_LFY, P_LQX, P_LQY, \
+    P_RESTITUTION = range(22)
+POINT_COLUMNS = 22
+# Columns of a point's key (`ContactTable.keys`), which matches it across substeps together with
+# its manifold's entity A: the other entity (a wall contact: the wall's entity; else body B's),
+# the other side's piece (a wall's: its index among that wall's pieces), A's piece, the feature.
+K_OTHER, K_PIECE, K_OWN, K_FEATURE = range(4)
+KEY_COLUMNS = 4
 
 
 @dataclass(slots=True)
@@ -25,7 +71,7 @@ class ContactPoint:
     x: float
     y: float
     separation: float
-    key: tuple  # (other piece, own piece, feature): matches this point across substeps
+    key: tuple  # (other piece, own piece, feature), a wall's (wall entity, its piece, own piece, feature)
     restitution: float
     friction: float
     # Local geometry for non-linear position correction: the reference face in its body's frame and
@@ -49,7 +95,8 @@ class ContactPoint:
 
 @dataclass(slots=True)
 class Manifold:
-    """Up to two points between body A and body B sharing one normal (from A to B)."""
+    """Up to two points between body A and body B sharing one normal (from A to B): a row of a
+    `ContactTable` as an object, or a hand-made one for `table_of`."""
 
     entity_a: int
     entity_b: int  # -1 for the static world
@@ -65,98 +112,353 @@ class Manifold:
     block: bool = False
 
 
-def _to_local(body: Body, x: float, y: float) -> tuple[float, float]:
-    c, s = math.cos(body.angle), math.sin(body.angle)
-    dx, dy = x - body.x, y - body.y
+def _point_row(p: ContactPoint) -> tuple[float, ...]:
+    """A point's row, P_ columns in order."""
+    return (p.x, p.y, p.separation, p.friction, p.normal_impulse, p.tangent_impulse, p.push_impulse, p.ra_x, p.ra_y,
+            p.rb_x, p.rb_y, p.normal_mass, p.tangent_mass, p.approach_speed, float(p.ref_is_a), *p.local_normal,
+            *p.local_face, *p.local_clip, p.restitution)
+
+
+def _point_of(row: list[float], key: tuple) -> ContactPoint:
+    """`_point_row` the other way."""
+    (x, y, sep, friction, normal, tangent, push, rax, ray, rbx, rby, normal_mass, tangent_mass, approach, ref_is_a,
+     lnx, lny, lfx, lfy, lqx, lqy, restitution) = row
+    return ContactPoint(x=x, y=y, separation=sep, key=key, restitution=restitution, friction=friction,
+                        ref_is_a=ref_is_a != 0.0, local_normal=(lnx, lny), local_face=(lfx, lfy),
+                        local_clip=(lqx, lqy), ra_x=rax, ra_y=ray, rb_x=rbx, rb_y=rby, normal_mass=normal_mass,
+                        tangent_mass=tangent_mass, normal_impulse=normal, tangent_impulse=tangent, push_impulse=push,
+                        approach_speed=approach)
+
+
+@dataclass(slots=True)
+class ContactTable:
+    """One substep's manifolds and their points. Manifold k: entities `ents[k]` (A, B; B = -1 for
+    the static world), body rows `pair[k]` (rows of `store.state`; the static world is the row after
+    the store's, `len(store.state)`, as in `packed_bodies`), `normals[k]` (M_ columns), `block[k]`
+    (solved as a block: written by the solver), its points rows first[k]:first[k + 1] of `points`
+    (P_ columns) and `keys` (K_ columns)."""
+
+    ents: np.ndarray  # (m, 2) int64
+    pair: np.ndarray  # (m, 2) int64
+    normals: np.ndarray  # (m, MANIFOLD_COLUMNS) float64
+    block: np.ndarray  # (m,) bool
+    first: np.ndarray  # (m + 1,) int64
+    points: np.ndarray  # (points, POINT_COLUMNS) float64
+    keys: np.ndarray  # (points, KEY_COLUMNS) int64
+    store: BodyStore | None = None  # whose rows `pair` names
+    static: Body | None = None  # the static world's stand-in body
+
+    @classmethod
+    def empty(cls) -> ContactTable:
+        return cls(np.zeros((0, 2), dtype=np.int64), np.zeros((0, 2), dtype=np.int64), np.zeros((0, MANIFOLD_COLUMNS)),
+                   np.zeros(0, dtype=np.bool_), np.zeros(1, dtype=np.int64), np.zeros((0, POINT_COLUMNS)),
+                   np.zeros((0, KEY_COLUMNS), dtype=np.int64))
+
+    def __len__(self) -> int:
+        return len(self.pair)
+
+    def packed_bodies(self) -> np.ndarray:
+        """The solver's body rows (`SOLVER_COLUMNS`): a copy of the store's, then the static world's."""
+        state = self.store.state
+        bodies = np.empty((len(state) + 1, SOLVER_COLUMNS))
+        bodies[:-1] = state[:, :SOLVER_COLUMNS]
+        bodies[-1] = self.static._row[:SOLVER_COLUMNS]
+        return bodies
+
+    def write_back(self, bodies: np.ndarray) -> None:
+        """Pose, velocity and pseudo-velocity from `packed_bodies` rows back to the bodies; mass
+        properties stay."""
+        for row, target in ((bodies[:-1], self.store.state), (bodies[-1], self.static._row)):
+            target[..., B_X:SPIN + 1] = row[..., B_X:SPIN + 1]
+            target[..., PUSH_X:PUSH_SPIN + 1] = row[..., PUSH_X:PUSH_SPIN + 1]
+
+    def body(self, row: int) -> Body:
+        return self.static if row == len(self.store.state) else self.store.handle(row)
+
+    def manifolds(self) -> list[Manifold]:
+        """The table as objects, a snapshot (tests and tools read it; the step never does)."""
+        points, keys, first = self.points.tolist(), self.keys.tolist(), self.first.tolist()
+        out = []
+        for k, ((ea, eb), (ra, rb), (nx, ny, k11, k12, k22), block) in enumerate(
+                zip(self.ents.tolist(), self.pair.tolist(), self.normals.tolist(), self.block.tolist())):
+            own = [_point_of(points[p], tuple(keys[p]) if eb == -1 else tuple(keys[p][K_PIECE:]))
+                   for p in range(first[k], first[k + 1])]
+            out.append(Manifold(ea, eb, self.body(ra), self.body(rb), nx, ny, own, k11, k12, k22, block))
+        return out
+
+
+def table_of(manifolds: Sequence[Manifold], store: BodyStore, static: Body) -> ContactTable:
+    """A table of hand-made manifolds (tests, the warm-up): every body is `static` or one of
+    `store`'s (by identity). A key is padded with zeros to its columns (a body pair's after entity B)."""
+    row_of = {id(body): k for k, body in enumerate(store.bodies)}
+    row_of[id(static)] = len(store.state)
+    count = len(manifolds)
+    ents = np.array([(m.entity_a, m.entity_b) for m in manifolds], dtype=np.int64).reshape(count, 2)
+    pair = np.array([(row_of[id(m.body_a)], row_of[id(m.body_b)]) for m in manifolds], dtype=np.int64)
+    normals = np.zeros((count, MANIFOLD_COLUMNS))
+    normals[:, M_NX:M_NY + 1] = np.array([(m.nx, m.ny) for m in manifolds]).reshape(count, 2)
+    first = np.zeros(count + 1, dtype=np.int64)
+    first[1:] = np.cumsum([len(m.points) for m in manifolds])
+    points = np.array([_point_row(p) for m in manifolds for p in m.points], dtype=np.float64)
+    keys = np.array([((*p.key, 0, 0, 0, 0) if m.entity_b == -1 else (m.entity_b, *p.key, 0, 0, 0))[:KEY_COLUMNS]
+                     for m in manifolds for p in m.points], dtype=np.int64)
+    return ContactTable(ents, pair.reshape(count, 2), normals, np.zeros(count, dtype=np.bool_), first,
+                        points.reshape(-1, POINT_COLUMNS), keys.reshape(-1, KEY_COLUMNS), store, static)
+
+
+# --- the kernels ------------------------------------------------------------------------------------
+
+@kernel
+def _reduce(rows: np.ndarray, member: np.ndarray, count: int, nx: float, ny: float, chosen: np.ndarray) -> int:
+    """Keep the two points (rows `member[:count]`) that span the contact along the tangent, into
+    `chosen`; returns how many. The least (tangent position, separation) and the greatest (tangent
+    position, -separation), the first of equals, as Python's min and max on those tuples; if that is
+    one point, the deepest alone. Two or fewer are kept as they are."""
+    if count <= 2:
+        for c in range(count):
+            chosen[c] = member[c]
+        return count
+    tx, ty = ny, -nx
+    lo = hi = member[0]
+    lo_t = hi_t = rows[lo, X] * tx + rows[lo, Y] * ty
+    lo_s = rows[lo, SEP]
+    hi_s = -rows[lo, SEP]
+    for c in range(1, count):
+        r = member[c]
+        t = rows[r, X] * tx + rows[r, Y] * ty
+        s = rows[r, SEP]
+        if (t < lo_t) if t != lo_t else (s < lo_s):  # a tuple's <: the first element that differs decides
+            lo, lo_t, lo_s = r, t, s
+        if (t > hi_t) if t != hi_t else (-s > hi_s):
+            hi, hi_t, hi_s = r, t, -s
+    if lo == hi:
+        deepest = member[0]
+        for c in range(1, count):
+            if rows[member[c], SEP] < rows[deepest, SEP]:
+                deepest = member[c]
+        chosen[0] = deepest
+        return 1
+    chosen[0], chosen[1] = lo, hi
+    return 2
+
+
+@kernel
+def _pose(state: np.ndarray, static: np.ndarray, row: int) -> tuple[float, float, float]:
+    if row == state.shape[0]:
+        return static[B_X], static[B_Y], static[B_ANGLE]
+    return state[row, B_X], state[row, B_Y], state[row, B_ANGLE]
+
+
+@kernel
+def _to_local(x: float, y: float, angle: float, px: float, py: float) -> tuple[float, float]:
+    """World point (px, py) in the frame of a body at (x, y, angle)."""
+    c, s = math.cos(angle), math.sin(angle)
+    dx, dy = px - x, py - y
     return c * dx + s * dy, -s * dx + c * dy
 
 
-def _rotate_to_local(body: Body, x: float, y: float) -> tuple[float, float]:
-    c, s = math.cos(body.angle), math.sin(body.angle)
-    return c * x + s * y, -s * x + c * y
+@kernel
+def _local_geometry(rows: np.ndarray, r: int, state: np.ndarray, static: np.ndarray, row_a: int, row_b: int,
+                    points: np.ndarray, p: int) -> None:
+    """What NGS re-measures a point by: the reference face (normal, a point on it) in its body's
+    frame, the incident point in its body's frame."""
+    ref_is_a = rows[r, REF_IS_A] != 0.0
+    ref, inc = (row_a, row_b) if ref_is_a else (row_b, row_a)
+    fnx, fny = (rows[r, NX], rows[r, NY]) if ref_is_a else (-rows[r, NX], -rows[r, NY])
+    x, y, angle = _pose(state, static, ref)
+    c, s = math.cos(angle), math.sin(angle)
+    points[p, P_LNX], points[p, P_LNY] = c * fnx + s * fny, -s * fnx + c * fny
+    points[p, P_LFX], points[p, P_LFY] = _to_local(x, y, angle, rows[r, FACE_X], rows[r, FACE_Y])
+    x, y, angle = _pose(state, static, inc)
+    points[p, P_LQX], points[p, P_LQY] = _to_local(x, y, angle, rows[r, CLIP_X], rows[r, CLIP_Y])
 
 
-def make_point(row: list[float], key: tuple, body_a: Body, body_b: Body, material: Material,
-               ngs: bool) -> ContactPoint:
-    """A solver point from a contact row of `collide.collide_sets` (a list, as `tolist` gives)."""
-    ref_is_a = row[REF_IS_A] != 0.0
-    point = ContactPoint(x=row[X], y=row[Y], separation=row[SEP], key=key, restitution=material.restitution,
-                         friction=material.friction, ref_is_a=ref_is_a)
-    if ngs:
-        ref, inc = (body_a, body_b) if ref_is_a else (body_b, body_a)
-        face_normal = (row[NX], row[NY]) if ref_is_a else (-row[NX], -row[NY])
-        point.local_normal = _rotate_to_local(ref, *face_normal)
-        point.local_face = _to_local(ref, row[FACE_X], row[FACE_Y])
-        point.local_clip = _to_local(inc, row[CLIP_X], row[CLIP_Y])
-    return point
-
-
-def reduce_points(points: list[ContactPoint], nx: float, ny: float) -> list[ContactPoint]:
-    """Keep the two points that span the contact along the tangent (the deepest breaks ties)."""
-    if len(points) <= 2:
-        return points
-    tx, ty = ny, -nx
-    lo = min(points, key=lambda p: (p.x * tx + p.y * ty, p.separation))
-    hi = max(points, key=lambda p: (p.x * tx + p.y * ty, -p.separation))
-    if lo is hi:
-        return [min(points, key=lambda p: p.separation)]
-    return [lo, hi]
-
-
-def group_by_normal(raw: list[tuple[float, float, ContactPoint]]) -> list[tuple[float, float, list[ContactPoint]]]:
-    """Collect (normal, point) pairs into planes of (nearly) equal normal."""
-    groups: list[tuple[float, float, list[ContactPoint]]] = []
-    for nx, ny, point in raw:
-        for gx, gy, members in groups:
-            if gx * nx + gy * ny >= SAME_NORMAL_COS:
-                members.append(point)
+@kernel
+def _add_group(rows: np.ndarray, s: int, e: int, ea: int, eb: int, row_a: int, row_b: int, restitution: float,
+               friction: float, other: np.ndarray, wall_materials: np.ndarray, wall_owner: np.ndarray,
+               wall_index: np.ndarray, state: np.ndarray, static: np.ndarray, ngs: bool, ents: np.ndarray,
+               pair: np.ndarray, normals: np.ndarray, first: np.ndarray, points: np.ndarray, keys: np.ndarray,
+               scratch: np.ndarray, m: int, p: int) -> tuple[int, int, float]:
+    """The manifolds of rows s:e, every contact between two bodies (entities ea, eb; eb = -1: the
+    static world, each row's PIECE_B a wall piece), appended to the table's arrays at manifold m and
+    point p: planes of (nearly) equal normal, in the order each plane first comes and with its first
+    row's normal, each one manifold of at most two points (`_reduce`). A's restitution and friction
+    multiply B's (`other`, or a wall piece's `wall_materials`); with `ngs`, each point gets its local
+    geometry. Returns the next m and p, and the deepest overlap of the points kept (at least 0)."""
+    plane, plane_row, member, chosen = scratch[0], scratch[1], scratch[2], scratch[3]
+    planes = 0
+    for r in range(s, e):
+        nx, ny = rows[r, NX], rows[r, NY]
+        plane[r - s] = -1
+        for j in range(planes):
+            q = plane_row[j]
+            if rows[q, NX] * nx + rows[q, NY] * ny >= SAME_NORMAL_COS:
+                plane[r - s] = j
                 break
-        else:
-            groups.append((nx, ny, [point]))
-    return groups
+        if plane[r - s] < 0:
+            plane_row[planes] = r
+            plane[r - s] = planes
+            planes += 1
+    wall = eb == -1
+    overlap = 0.0
+    for j in range(planes):
+        count = 0
+        for r in range(s, e):
+            if plane[r - s] == j:
+                member[count] = r
+                count += 1
+        nx, ny = rows[plane_row[j], NX], rows[plane_row[j], NY]
+        for c in range(_reduce(rows, member, count, nx, ny, chosen)):
+            r = chosen[c]
+            points[p, P_X], points[p, P_Y], points[p, P_SEP] = rows[r, X], rows[r, Y], rows[r, SEP]
+            if wall:
+                piece = int(rows[r, PIECE_B])
+                rb, fb = wall_materials[piece, 0], wall_materials[piece, 1]
+                keys[p, K_OTHER], keys[p, K_PIECE] = wall_owner[piece], wall_index[piece]
+            else:
+                rb, fb = other[0], other[1]
+                keys[p, K_OTHER], keys[p, K_PIECE] = eb, int(rows[r, PIECE_B])
+            keys[p, K_OWN], keys[p, K_FEATURE] = int(rows[r, PIECE_A]), int(rows[r, FEATURE])
+            points[p, P_RESTITUTION] = restitution * rb
+            points[p, P_FRICTION] = friction * fb
+            points[p, P_REF_IS_A] = 1.0 if rows[r, REF_IS_A] != 0.0 else 0.0
+            if ngs:
+                _local_geometry(rows, r, state, static, row_a, row_b, points, p)
+            if -rows[r, SEP] > overlap:
+                overlap = -rows[r, SEP]
+            p += 1
+        ents[m, 0], ents[m, 1] = ea, eb
+        pair[m, 0], pair[m, 1] = row_a, row_b
+        normals[m, M_NX], normals[m, M_NY] = nx, ny
+        m += 1
+        first[m] = p
+    return m, p, overlap
 
 
-def combine(a: Material, b: Material) -> Material:
-    """Materials multiply (design notes): walls default to 1.0, so the ball's own values rule."""
-    return Material(restitution=a.restitution * b.restitution, friction=a.friction * b.friction)
+@kernel
+def build_contacts(wall_rows: np.ndarray, near_ents: np.ndarray, near_rows: np.ndarray, near_materials: np.ndarray,
+                   wall_materials: np.ndarray, wall_owner: np.ndarray, wall_index: np.ndarray,
+                   pair_rows: np.ndarray, pair_first: np.ndarray, pair_ents: np.ndarray, pair_body_rows: np.ndarray,
+                   pair_materials: np.ndarray, state: np.ndarray, static: np.ndarray, ngs: bool, deepest: float
+                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, float]:
+    """The table of one substep's contact rows (`_add_group` for each two bodies that touch), walls
+    first. `wall_rows`: bodies' rows against wall pieces, body by body (body q = column BODY is
+    entity `near_ents[q]`, row `near_rows[q]` of `state`, of restitution and friction
+    `near_materials[q]`; a wall piece's material, entity and index there come from `wall_materials`,
+    `wall_owner`, `wall_index`). Then body pairs: pair g is `pair_rows[pair_first[g]:pair_first[g +
+    1]]` between entities `pair_ents[g]`, rows `pair_body_rows[g]`, materials `pair_materials[g]`
+    (A's restitution and friction, then B's). The static world is the row after `state`'s, its pose
+    `static`. Impulses start at zero (`carry_impulses` warm-starts them).
+
+    Returns ents, pair, normals, first, points, keys (without `block`) and the deepest overlap of any
+    point kept, or `deepest` if that is deeper."""
+    n = wall_rows.shape[0] + pair_rows.shape[0]
+    ents = np.empty((n, 2), dtype=np.int64)
+    pair = np.empty((n, 2), dtype=np.int64)
+    normals = np.zeros((n, MANIFOLD_COLUMNS))
+    first = np.zeros(n + 1, dtype=np.int64)
+    points = np.zeros((n, POINT_COLUMNS))
+    keys = np.empty((n, KEY_COLUMNS), dtype=np.int64)
+    scratch = np.empty((4, max(n, 2)), dtype=np.int64)
+    static_row = state.shape[0]
+    m = p = 0
+    s = 0
+    while s < wall_rows.shape[0]:
+        q = int(wall_rows[s, BODY])
+        e = s + 1
+        while e < wall_rows.shape[0] and wall_rows[e, BODY] == wall_rows[s, BODY]:
+            e += 1
+        m, p, overlap = _add_group(wall_rows, s, e, near_ents[q], -1, near_rows[q], static_row, near_materials[q, 0],
+                                   near_materials[q, 1], near_materials[q], wall_materials, wall_owner, wall_index,
+                                   state, static, ngs, ents, pair, normals, first, points, keys, scratch, m, p)
+        if overlap > deepest:
+            deepest = overlap
+        s = e
+    for g in range(pair_ents.shape[0]):
+        m, p, overlap = _add_group(pair_rows, pair_first[g], pair_first[g + 1], pair_ents[g, 0], pair_ents[g, 1],
+                                   pair_body_rows[g, 0], pair_body_rows[g, 1], pair_materials[g, 0],
+                                   pair_materials[g, 1], pair_materials[g, 2:], wall_materials, wall_owner,
+                                   wall_index, state, static, ngs, ents, pair, normals, first, points, keys, scratch,
+                                   m, p)
+        if overlap > deepest:
+            deepest = overlap
+    return ents[:m], pair[:m], normals[:m], first[:m + 1], points[:p], keys[:p], deepest
 
 
-Carried = dict[tuple, tuple[float, float]]
+@kernel
+def _compare(ids: np.ndarray, i: int, ent: int, keys: np.ndarray, p: int) -> int:
+    """-1, 0 or 1 as carried id i is before, equal to or after (ent, keys[p]), in lexicographic order."""
+    if ids[i, 0] != ent:
+        return -1 if ids[i, 0] < ent else 1
+    for c in range(KEY_COLUMNS):
+        if ids[i, c + 1] != keys[p, c]:
+            return -1 if ids[i, c + 1] < keys[p, c] else 1
+    return 0
 
 
-def persistent_impulses(manifolds: list[Manifold]) -> Carried:
-    """Last substep's impulses of points that were resting, keyed by (entity a, entity b, point key).
-
-    Only persistent contacts are warm-started: an impact's impulse belongs to that impact, and
-    re-applying it to a contact that is now opening would add energy."""
-    carried: Carried = {}
-    for m in manifolds:
-        for p in m.points:
-            if (p.normal_impulse or p.tangent_impulse) and p.approach_speed >= -RESTITUTION_THRESHOLD:
-                carried[(m.entity_a, m.entity_b, p.key)] = (p.normal_impulse, p.tangent_impulse)
+@kernel
+def carry_impulses(old_ents: np.ndarray, old_first: np.ndarray, old_keys: np.ndarray, old_points: np.ndarray,
+                   ents: np.ndarray, first: np.ndarray, keys: np.ndarray, points: np.ndarray,
+                   threshold: float) -> int:
+    """Warm starting: each point of the new table whose (entity A, key) was a point of the old one
+    that was pushing (a normal or tangent impulse) and resting (approach speed >= -threshold) starts
+    with that point's impulses; of equal old ones, the last. Only persistent contacts are
+    warm-started: an impact's impulse belongs to that impact, and re-applying it to a contact that
+    is now opening would add energy. Returns how many points were carried."""
+    ids = np.empty((old_keys.shape[0], KEY_COLUMNS + 1), dtype=np.int64)
+    source = np.empty(old_keys.shape[0], dtype=np.int64)
+    c = 0
+    for k in range(old_ents.shape[0]):
+        for p in range(old_first[k], old_first[k + 1]):
+            if ((old_points[p, P_NORMAL_IMPULSE] != 0.0 or old_points[p, P_TANGENT_IMPULSE] != 0.0)
+                    and old_points[p, P_APPROACH] >= -threshold):
+                ids[c, 0] = old_ents[k, 0]
+                for col in range(KEY_COLUMNS):
+                    ids[c, col + 1] = old_keys[p, col]
+                source[c] = p
+                c += 1
+    if c == 0:
+        return 0
+    # Lexicographic order: stable sorts from the last column to the first (equal ids keep their order).
+    order = np.arange(c)
+    column = np.empty(c, dtype=np.int64)
+    for col in range(KEY_COLUMNS, -1, -1):
+        for i in range(c):
+            column[i] = ids[order[i], col]
+        order = order[np.argsort(column, kind="mergesort")]
+    carried = 0
+    for k in range(ents.shape[0]):
+        for p in range(first[k], first[k + 1]):
+            lo, hi = 0, c  # the first carried id after the point's
+            while lo < hi:
+                mid = (lo + hi) // 2
+                if _compare(ids, order[mid], ents[k, 0], keys, p) <= 0:
+                    lo = mid + 1
+                else:
+                    hi = mid
+            if lo > 0 and _compare(ids, order[lo - 1], ents[k, 0], keys, p) == 0:
+                q = source[order[lo - 1]]
+                points[p, P_NORMAL_IMPULSE] = old_points[q, P_NORMAL_IMPULSE]
+                points[p, P_TANGENT_IMPULSE] = old_points[q, P_TANGENT_IMPULSE]
+                carried += 1
     return carried
 
 
-def contact_points(rows: list[list[float]], body_a: Body, body_b: Body, material: Material, ngs: bool,
-                   key: Callable[[list[float]], tuple]) -> list[tuple[float, float, ContactPoint]]:
-    """(normal, point) for every contact row between two bodies; `key(row)` names a point so it can
-    be matched in the next substep."""
-    return [(row[NX], row[NY], make_point(row, key(row), body_a, body_b, material, ngs)) for row in rows]
-
-
-def add_manifolds(out: list[Manifold], raw: list[tuple[float, float, ContactPoint]], entity_a: int, entity_b: int,
-                  body_a: Body, body_b: Body, carried: Carried) -> float:
-    """Group the points between two bodies into one manifold per normal (at most two points each),
-    carry over the impulses of persisting points, append to `out`; returns the deepest overlap."""
-    deepest = 0.0
-    for nx, ny, points in group_by_normal(raw):
-        points = reduce_points(points, nx, ny)
-        for p in points:
-            if -p.separation > deepest:
-                deepest = -p.separation
-            previous = carried.get((entity_a, entity_b, p.key))
-            if previous is not None:
-                p.normal_impulse, p.tangent_impulse = previous
-        out.append(Manifold(entity_a=entity_a, entity_b=entity_b, body_a=body_a, body_b=body_b, nx=nx, ny=ny,
-                            points=points))
-    return deepest
+@warm_up("contact table")
+def _warm() -> None:
+    state = np.zeros((2, len(COLUMNS)))
+    state[:, B_Y] = 0.5, 1.5
+    rows = np.zeros((4, ROW))
+    rows[:, X] = -0.5, 0.5, 0.0, 0.2
+    rows[:, NY] = -1.0, -1.0, -1.0, 1.0
+    rows[:, SEP] = -0.01
+    rows[:, FEATURE] = 1.0, 2.0, 3.0, 4.0
+    rows[3, REF_IS_A] = 1.0
+    one = np.zeros(1, dtype=np.int64)
+    for ngs in (False, True):
+        ents, pair, normals, first, points, keys, _ = build_contacts(
+            rows[:3], one, one, np.full((1, 2), 0.5), np.ones((1, 2)), one, one, rows[3:],
+            np.array([0, 1], dtype=np.int64), np.array([[1, 2]], dtype=np.int64), np.array([[0, 1]], dtype=np.int64),
+            np.full((1, 4), 0.5), state, np.zeros(len(COLUMNS)), ngs, 0.0)
+        points[:, P_NORMAL_IMPULSE] = 1.0
+        carry_impulses(ents, first, keys, points, ents, first, keys, points.copy(), RESTITUTION_THRESHOLD)

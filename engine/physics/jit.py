@@ -53,6 +53,7 @@ KERNEL_MODULES = (
     "polygolf.engine.physics.geometry",
     "polygolf.engine.physics.motion",
     "polygolf.engine.physics.collide",
+    "polygolf.engine.physics.contact",
     "polygolf.engine.physics.toi",
     "polygolf.engine.physics.grid",
     "polygolf.engine.physics.solver",

@@ -16,9 +16,9 @@ Per substep, island by island:
 `ApplyImpulse` do for its world; the restitution phase is its own stage. Normals point from body A to
 body B; a negative normal velocity is approach.
 
-The work is one compiled kernel (`solve_contacts`) over packed arrays: `solve` packs the substep's
-bodies, manifolds and points once, runs it, and writes back what later stages read (the bodies'
-state; each point's impulses, lever arms, masses and approach speed; each manifold's block data).
+The work is one compiled kernel (`solve_contacts`) over the substep's `contact.ContactTable`, whose
+manifold and point rows it reads and writes in place, and a packed copy of the bodies' rows (the
+store's and the static world's), whose pose, velocity and pseudo-velocity `solve` writes back.
 """
 
 from __future__ import annotations
@@ -28,8 +28,40 @@ import math
 import numpy as np
 
 from polygolf.engine.physics import body
-from polygolf.engine.physics.body import SOLVER_COLUMNS, Body
-from polygolf.engine.physics.contact import ContactPoint, Manifold
+from polygolf.engine.physics.body import Body, BodyStore
+from polygolf.engine.physics.contact import (
+    M_K11,
+    M_K12,
+    M_K22,
+    M_NX,
+    M_NY,
+    P_APPROACH,
+    P_FRICTION,
+    P_LFX,
+    P_LFY,
+    P_LNX,
+    P_LNY,
+    P_LQX,
+    P_LQY,
+    P_NORMAL_IMPULSE,
+    P_NORMAL_MASS,
+    P_PUSH_IMPULSE,
+    P_RA_X,
+    P_RA_Y,
+    P_RB_X,
+    P_RB_Y,
+    P_REF_IS_A,
+    P_RESTITUTION,
+    P_SEP,
+    P_TANGENT_IMPULSE,
+    P_TANGENT_MASS,
+    P_X,
+    P_Y,
+    ContactPoint,
+    ContactTable,
+    Manifold,
+    table_of,
+)
 from polygolf.engine.physics.jit import kernel, warm_up
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import BLOCK_MAX_CONDITION, LINEAR_SLOP, MAX_CORRECTION, POSITION_BETA
@@ -40,13 +72,6 @@ from polygolf.engine.physics.settings import BLOCK_MAX_CONDITION, LINEAR_SLOP, M
 B_X, B_Y, B_ANGLE, B_VX, B_VY, B_SPIN, B_MASS, B_INERTIA, B_INV_MASS, B_INV_INERTIA, B_PUSH_X, B_PUSH_Y, \
     B_PUSH_SPIN = body.X, body.Y, body.ANGLE, body.VX, body.VY, body.SPIN, body.MASS, body.INERTIA, body.INV_MASS, \
     body.INV_INERTIA, body.PUSH_X, body.PUSH_Y, body.PUSH_SPIN
-# Columns of a manifold row: its normal and its block matrix (filled for two-point manifolds).
-M_NX, M_NY, M_K11, M_K12, M_K22 = range(5)
-# Columns of a point row: what the narrowphase made (P_X..P_FRICTION), the solver's state
-# (P_NORMAL_IMPULSE..P_APPROACH, written back to the point) and the local geometry NGS reads.
-P_X, P_Y, P_SEP, P_FRICTION, P_NORMAL_IMPULSE, P_TANGENT_IMPULSE, P_PUSH_IMPULSE, P_RA_X, P_RA_Y, P_RB_X, P_RB_Y, \
-    P_NORMAL_MASS, P_TANGENT_MASS, P_APPROACH, P_REF_IS_A, P_LNX, P_LNY, P_LFX, P_LFY, P_LQX, P_LQY = range(21)
-POINT_COLUMNS = 21
 # Position correction, as `solve_contacts` takes it.
 SPLIT, NGS, NO_CORRECTION = 0, 1, 2
 _CORRECTIONS = {"split": SPLIT, "ngs": NGS, "none": NO_CORRECTION}
@@ -581,105 +606,65 @@ def solve_contacts(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, fi
     return cold_restarts
 
 
-# --- the adapter ----------------------------------------------------------------------------------
+# --- the adapters ---------------------------------------------------------------------------------
 
-def solve(manifolds: list[Manifold], knobs: Knobs, dt: float, friction: bool) -> int:
-    """One substep's contact solve (`solve_contacts` on this substep's manifolds, packed once).
-    Returns how many islands threw their warm start away for a cold solve."""
-    if not manifolds:
+def solve(table: ContactTable, knobs: Knobs, dt: float, friction: bool) -> int:
+    """One substep's contact solve (`solve_contacts` on the table, in place: its points' impulses,
+    lever arms, masses and approach speeds, its manifolds' block data; the bodies' pose, velocity
+    and pseudo-velocity). Returns how many islands threw their warm start away for a cold solve."""
+    if not len(table):
         return 0
-    index: dict[int, int] = {}
-    bodies: list[Body] = []
-    body_a: list[int] = []
-    body_b: list[int] = []
-    manifold_rows: list[tuple[float, ...]] = []
-    first = [0]
-    points: list[ContactPoint] = []
-
-    def row_of(body: Body) -> int:
-        """The body's row in the packed arrays (each body once, however many manifolds it is in)."""
-        row = index.get(id(body))
-        if row is None:
-            row = index[id(body)] = len(bodies)
-            bodies.append(body)
-        return row
-
-    for m in manifolds:
-        body_a.append(row_of(m.body_a))
-        body_b.append(row_of(m.body_b))
-        manifold_rows.append((m.nx, m.ny, 0.0, 0.0, 0.0))
-        points += m.points
-        first.append(len(points))
-
-    body_rows = np.array([b._row[:SOLVER_COLUMNS] for b in bodies], dtype=np.float64)
-    normals = np.array(manifold_rows, dtype=np.float64)
-    pair = np.array((body_a, body_b), dtype=np.int64).T.copy()
-    offsets = np.array(first, dtype=np.int64)
-    point_rows = np.empty((len(points), POINT_COLUMNS))
-    if points:
-        point_rows[:, :P_RA_X] = [(p.x, p.y, p.separation, p.friction, p.normal_impulse, p.tangent_impulse,
-                                   p.push_impulse) for p in points]
-        if knobs.position_correction == "ngs":
-            point_rows[:, P_REF_IS_A:] = [(p.ref_is_a, *p.local_normal, *p.local_face, *p.local_clip) for p in points]
-    block = np.empty(len(manifolds), dtype=np.bool_)
-
+    bodies = table.packed_bodies()
     cold_restarts = solve_contacts(
-        body_rows, normals, pair, offsets, block, point_rows, bool(knobs.warm_start), int(knobs.iterations),
-        int(knobs.position_iterations), _CORRECTIONS[knobs.position_correction], float(dt), bool(friction),
-        POSITION_BETA, LINEAR_SLOP, MAX_CORRECTION, BLOCK_MAX_CONDITION)
-
-    for moved, row in zip(bodies, body_rows):  # pose, velocity, pseudo-velocity; mass properties stay
-        moved._row[B_X:B_SPIN + 1] = row[B_X:B_SPIN + 1]
-        moved._row[B_PUSH_X:B_PUSH_SPIN + 1] = row[B_PUSH_X:B_PUSH_SPIN + 1]
-    for p, (normal, tangent, push, rax, ray, rbx, rby, normal_mass, tangent_mass, approach) in zip(
-            points, point_rows[:, P_NORMAL_IMPULSE:P_APPROACH + 1].tolist()):
-        p.normal_impulse = normal
-        p.tangent_impulse = tangent
-        p.push_impulse = push
-        p.ra_x = rax
-        p.ra_y = ray
-        p.rb_x = rbx
-        p.rb_y = rby
-        p.normal_mass = normal_mass
-        p.tangent_mass = tangent_mass
-        p.approach_speed = approach
-    for m, is_block in zip(manifolds, block.tolist()):
-        m.block = is_block
-    two = np.flatnonzero(offsets[1:] - offsets[:-1] == 2)  # prepare fills K for two-point manifolds only
-    for k, (k11, k12, k22) in zip(two.tolist(), normals[two, M_K11:].tolist()):
-        m = manifolds[k]
-        m.k11 = k11
-        m.k12 = k12
-        m.k22 = k22
+        bodies, table.normals, table.pair, table.first, table.block, table.points, bool(knobs.warm_start),
+        int(knobs.iterations), int(knobs.position_iterations), _CORRECTIONS[knobs.position_correction], float(dt),
+        bool(friction), POSITION_BETA, LINEAR_SLOP, MAX_CORRECTION, BLOCK_MAX_CONDITION)
+    table.write_back(bodies)
     return cold_restarts
 
 
-def apply_restitution(manifolds: list[Manifold], threshold: float) -> int:
-    """Poisson restitution: every point that was approaching faster than `threshold` gets e times
-    its compression impulse again. Returns how many points bounced.
+@kernel
+def _body_row(state: np.ndarray, static: np.ndarray, k: int) -> np.ndarray:
+    """Body row k of a table's bodies: the store's `state`, and past its end the static world's row."""
+    return static if k == state.shape[0] else state[k]
 
-    A plain loop: it runs after `solve` has written each point back, and touches only the few points
-    of this substep's impacts."""
+
+@kernel
+def _restitution(state: np.ndarray, static: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray,
+                 points: np.ndarray, threshold: float) -> int:
+    """`apply_restitution` on a table's arrays and its bodies' rows, in place."""
     bounced = 0
-    for m in manifolds:
-        nx, ny = m.nx, m.ny
-        a, b = m.body_a, m.body_b
-        for p in m.points:
-            if p.approach_speed >= -threshold or p.normal_impulse <= 0.0 or p.restitution <= 0.0:
+    for k in range(pair.shape[0]):
+        nx, ny = normals[k, M_NX], normals[k, M_NY]
+        a, b = _body_row(state, static, pair[k, 0]), _body_row(state, static, pair[k, 1])
+        for p in range(first[k], first[k + 1]):
+            if points[p, P_APPROACH] >= -threshold or points[p, P_NORMAL_IMPULSE] <= 0.0 \
+                    or points[p, P_RESTITUTION] <= 0.0:
                 continue
-            e = p.restitution
-            jn, jt = e * p.normal_impulse, e * p.tangent_impulse
+            e = points[p, P_RESTITUTION]
+            jn, jt = e * points[p, P_NORMAL_IMPULSE], e * points[p, P_TANGENT_IMPULSE]
             px, py = jn * nx + jt * ny, jn * ny - jt * nx
-            a.vx -= a.inv_mass * px
-            a.vy -= a.inv_mass * py
-            a.spin -= a.inv_inertia * (p.ra_x * py - p.ra_y * px)
-            b.vx += b.inv_mass * px
-            b.vy += b.inv_mass * py
-            b.spin += b.inv_inertia * (p.rb_x * py - p.rb_y * px)
+            a[B_VX] -= a[B_INV_MASS] * px
+            a[B_VY] -= a[B_INV_MASS] * py
+            a[B_SPIN] -= a[B_INV_INERTIA] * (points[p, P_RA_X] * py - points[p, P_RA_Y] * px)
+            b[B_VX] += b[B_INV_MASS] * px
+            b[B_VY] += b[B_INV_MASS] * py
+            b[B_SPIN] += b[B_INV_INERTIA] * (points[p, P_RB_X] * py - points[p, P_RB_Y] * px)
             # The impact is over: nothing of it should be warm-started into the next substep.
-            p.normal_impulse = p.tangent_impulse = 0.0
+            points[p, P_NORMAL_IMPULSE] = points[p, P_TANGENT_IMPULSE] = 0.0
             bounced += 1
     return bounced
+
+
+def apply_restitution(table: ContactTable, threshold: float) -> int:
+    """Poisson restitution: every point that was approaching faster than `threshold` gets e times
+    its compression impulse again. Returns how many points bounced. Runs after `solve`, on the
+    bodies' rows themselves (most substeps have no impact, and then not even that)."""
+    points = table.points
+    if (points[:, P_APPROACH] >= -threshold).all():
+        return 0  # every point resting: nothing bounces
+    return _restitution(table.store.state, table.static._row, table.normals, table.pair, table.first, points,
+                        threshold)
 
 
 @warm_up("contact solver")
@@ -687,14 +672,17 @@ def _warm() -> None:
     ground = Body(x=0.0, y=0.0)
     box = Body.dynamic(0.0, 0.5, 1.0, 1.0 / 6.0, vy=-1.0)
     top = Body.dynamic(0.0, 1.5, 1.0, 1.0 / 6.0, vy=-1.0)
+    store = BodyStore()
+    store.gather([(1, box), (2, top)])
 
-    def point(x: float, y: float, separation: float) -> ContactPoint:
-        return ContactPoint(x=x, y=y, separation=separation, key=(x,), restitution=0.5, friction=0.5,
+    def point(x: float, y: float, separation: float, key: int) -> ContactPoint:
+        return ContactPoint(x=x, y=y, separation=separation, key=(key,), restitution=0.5, friction=0.5,
                             local_normal=(0.0, 1.0), local_face=(x, 0.0), local_clip=(x, -0.5))
 
     for correction in ("split", "ngs"):
-        manifolds = [Manifold(1, -1, box, ground, 0.0, -1.0, [point(-0.5, 0.0, -0.01), point(0.5, 0.0, -0.01)]),
-                     Manifold(1, 2, box, top, 0.0, 1.0, [point(0.0, 1.0, -0.01)])]
-        solve(manifolds, Knobs(position_correction=correction), 1.0 / 240.0, True)
-        apply_restitution(manifolds, 0.05)
+        manifolds = [Manifold(1, -1, box, ground, 0.0, -1.0, [point(-0.5, 0.0, -0.01, 0), point(0.5, 0.0, -0.01, 1)]),
+                     Manifold(1, 2, box, top, 0.0, 1.0, [point(0.0, 1.0, -0.01, 2)])]
+        table = table_of(manifolds, store, ground)
+        solve(table, Knobs(position_correction=correction), 1.0 / 240.0, True)
+        apply_restitution(table, 0.05)
     solve_block(2.0, 1.0, 2.0, -1.0, -1.0, 0.0, 0.0)

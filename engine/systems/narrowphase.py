@@ -1,34 +1,26 @@
 from collections import Counter
-from itertools import groupby
 
 import esper
 import numpy as np
 
-from polygolf.engine.components import Body, Collider, Wall
+from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.body import ANGLE, SPIN, VX, VY, X, Y
-from polygolf.engine.physics.collide import (
-    BODY,
-    FEATURE,
-    NO_SEAMS,
-    NX,
-    NY,
-    PIECE_A,
-    PIECE_B,
-    ROW,
-    SEP,
-    bodies_wall_contacts,
-    collide_sets,
-)
-from polygolf.engine.physics.contact import Manifold, add_manifolds, combine, contact_points, make_point
-from polygolf.engine.physics.settings import CONTACT_MARGIN, GAP_TOLERANCE
+from polygolf.engine.physics.collide import NO_SEAMS, ROW, SEP, bodies_wall_contacts, collide_sets
+from polygolf.engine.physics.contact import ContactTable, build_contacts, carry_impulses
+from polygolf.engine.physics.settings import CONTACT_MARGIN, GAP_TOLERANCE, RESTITUTION_THRESHOLD
 from polygolf.engine.physics.toi import pair_reaches
+
+_NO_WALLS = (np.zeros((0, ROW)), np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64), np.zeros((0, 2)))
+_NO_PAIRS = (np.zeros((0, ROW)), np.zeros(1, dtype=np.int64), np.zeros((0, 2), dtype=np.int64),
+             np.zeros((0, 2), dtype=np.int64), np.zeros((0, 4)))
 
 
 class NarrowphaseProcessor(esper.Processor):
-    """Manifolds for the broadphase's candidates (see `physics.contact`): every pair of convex
-    pieces, one manifold per normal between two bodies, impulses of persisting points carried over
-    for warm starting. Reads the candidates; writes the contacts and the deepest overlap.
+    """The contact table for the broadphase's candidates (see `physics.contact`): every pair of
+    convex pieces, one manifold per normal between two bodies (`contact.build_contacts`, one call for
+    every body), impulses of persisting points carried over for warm starting
+    (`contact.carry_impulses`). Reads the candidates; writes the contacts and the deepest overlap.
 
     A contact with a gap acts only if the bodies, moving on as they are, would close that gap within
     the substep (`collide.wall_contacts`, `toi.pair_reaches`): a ball passing a corner or another ball it never
@@ -41,15 +33,11 @@ class NarrowphaseProcessor(esper.Processor):
         self.config, self.candidates, self.contacts = res.config, res.candidates, res.contacts
         self.statics, self.stats = res.statics, res.stats
         self.shapes, self.bodies = res.shapes, res.bodies
-        self._owner, self._index = res.statics.owner.tolist(), res.statics.index.tolist()  # fixed once built
+        self._empty = ContactTable.empty()
 
     def process(self) -> None:
-        carried = self.contacts.carried() if self.config.knobs.warm_start else {}
-        dt = self.config.dt
-        ngs = self.config.knobs.position_correction == "ngs"
-        static = self.statics.body
-        manifolds: list[Manifold] = []
-        deepest = self.stats.max_penetration
+        knobs, dt = self.config.knobs, self.config.dt
+        state = self.bodies.gather(esper.get_component(Body))
 
         # Pairs first (added after the walls, as always): a body another one presses on this substep
         # can be pushed into a wall it is not moving towards yet, so its wall gaps must stay contacts.
@@ -61,9 +49,9 @@ class NarrowphaseProcessor(esper.Processor):
             if (a.x - b.x) ** 2 + (a.y - b.y) ** 2 > reach * reach:
                 continue
             rows = _body_rows(col_a, a, col_b, b)
-            if rows:
+            if len(rows):
                 pairs.append((ea, eb, a, b, rows))
-                near.append((col_a, col_b, min(row[SEP] for row in rows)))
+                near.append((col_a, col_b, min(rows[:, SEP].tolist())))
         # A body with something else near (a wall or another body) may be halted by it in the solve.
         busy = Counter(e for ea, eb, *_ in pairs for e in (ea, eb))
         if pairs:
@@ -81,47 +69,53 @@ class NarrowphaseProcessor(esper.Processor):
                     gapped[k], grew = False, True
                     pressed |= {ea, eb}
 
+        # The contact rows against walls (body by body), then between bodies (pair by pair).
+        walls = _NO_WALLS
         near_walls = self.candidates.near
         if len(near_walls):
             everyone = esper.get_components(Body, Collider)
             table, _ = self.shapes.of(everyone)
-            state = self.bodies.gather(esper.get_component(Body))[self.shapes.rows(self.bodies, everyone)]
             rows_of_near = self.shapes.index(near_walls)
-            ents = near_walls.tolist()
-            held = np.array([ent in pressed for ent in ents], dtype=np.bool_).reshape(-1)
-            rows = bodies_wall_contacts(
+            near_rows = self.shapes.rows(self.bodies, everyone)[rows_of_near]
+            held = np.array([ent in pressed for ent in near_walls.tolist()], dtype=np.bool_).reshape(-1)
+            wall_rows = bodies_wall_contacts(
                 table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
-                rows_of_near, state[rows_of_near][:, [X, Y, ANGLE, VX, VY, SPIN]],
+                rows_of_near, state[near_rows][:, [X, Y, ANGLE, VX, VY, SPIN]],
                 held, self.candidates.near_first, self.candidates.near_found, self.statics.arrays, dt,
-                CONTACT_MARGIN).tolist()
-            owner, index = self._owner, self._index
-            for q, kept in groupby(rows, key=lambda row: int(row[BODY])):  # body by body
-                ent = ents[q]
-                body, col = esper.component_for_entity(ent, Body), esper.component_for_entity(ent, Collider)
-                materials = {}
-                raw = []
-                for row in kept:
-                    g = int(row[PIECE_B])
-                    wall_ent = owner[g]
-                    if wall_ent not in materials:
-                        materials[wall_ent] = combine(col.material, esper.component_for_entity(wall_ent, Wall).material)
-                    key = (wall_ent, index[g], int(row[PIECE_A]), int(row[FEATURE]))
-                    raw.append((row[NX], row[NY], make_point(row, key, body, static, materials[wall_ent], ngs)))
-                deepest = max(deepest, add_manifolds(manifolds, raw, ent, -1, body, static, carried))
+                CONTACT_MARGIN)
+            walls = (wall_rows, near_walls, near_rows, self.shapes.materials[rows_of_near])
+        kept = [(ea, eb, a, b, rows, col_a, col_b) for (ea, eb, a, b, rows), gap, (col_a, col_b, _)
+                in zip(pairs, gapped, near) if not gap]  # as for walls: bodies that will not meet do not touch
+        pair_groups = _NO_PAIRS
+        if kept:
+            for _, _, a, b, *_ in kept:
+                if a.asleep or b.asleep:
+                    a.wake()
+                    b.wake()
+            store_rows = self.bodies.rows
+            first = np.zeros(len(kept) + 1, dtype=np.int64)
+            first[1:] = np.cumsum([len(rows) for *_, rows, _, _ in kept])
+            pair_groups = (np.concatenate([rows for *_, rows, _, _ in kept]), first,
+                        np.array([(ea, eb) for ea, eb, *_ in kept], dtype=np.int64),
+                        np.array([(store_rows[ea], store_rows[eb]) for ea, eb, *_ in kept], dtype=np.int64),
+                        np.array([(col_a.material.restitution, col_a.material.friction, col_b.material.restitution,
+                                   col_b.material.friction) for *_, col_a, col_b in kept], dtype=np.float64))
 
-        for (ea, eb, a, b, rows), gap, (col_a, col_b, _) in zip(pairs, gapped, near):
-            if gap:
-                continue  # as for walls: two bodies that will not meet this substep do not touch
-            raw = contact_points(rows, a, b, combine(col_a.material, col_b.material), ngs,
-                                 lambda row: (int(row[PIECE_B]), int(row[PIECE_A]), int(row[FEATURE])))
-            if a.asleep or b.asleep:
-                a.wake()
-                b.wake()
-            deepest = max(deepest, add_manifolds(manifolds, raw, ea, eb, a, b, carried))
-
-        self.contacts.manifolds = manifolds
-        self.contacts.touching = {m.entity_a for m in manifolds} | {m.entity_b for m in manifolds}
-        self.stats.max_penetration = deepest
+        if not len(walls[0]) and pair_groups is _NO_PAIRS:
+            self.contacts.table = self._empty  # nothing touches: no kernel call (most substeps of a lone ball)
+            return
+        statics = self.statics
+        made = build_contacts(*walls, statics.materials, statics.owner, statics.index, *pair_groups, state,
+                              statics.body._row, knobs.position_correction == "ngs", self.stats.max_penetration)
+        *columns, deepest = made
+        self.stats.max_penetration = float(deepest)
+        new = ContactTable(*columns[:3], np.zeros(len(columns[1]), dtype=np.bool_), *columns[3:], self.bodies,
+                           statics.body)
+        old = self.contacts.table
+        if knobs.warm_start and len(old):
+            carry_impulses(old.ents, old.first, old.keys, old.points, new.ents, new.first, new.keys, new.points,
+                           RESTITUTION_THRESHOLD)
+        self.contacts.table = new
 
 
 def _arrays(col: Collider) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -137,11 +131,11 @@ def _velocity(body: Body) -> np.ndarray:
     return np.array((body.vx, body.vy, body.spin))
 
 
-def _body_rows(col_a: Collider, a: Body, col_b: Collider, b: Body) -> list[list[float]]:
+def _body_rows(col_a: Collider, a: Body, col_b: Collider, b: Body) -> np.ndarray:
     """Contact rows between two bodies, A's pieces in the outer loop."""
     va, na = col_a.posed(a.x, a.y, a.angle)
     vb, nb = col_b.posed(b.x, b.y, b.angle)
     out = np.empty((2 * len(col_a.shape) * len(col_b.shape), ROW))
     count = collide_sets(va, na, col_a.shape.first, vb, nb, col_b.shape.first, col_b.shape.every_piece,
                          NO_SEAMS, NO_SEAMS, False, CONTACT_MARGIN, False, out)
-    return out[:count].tolist()
+    return out[:count]

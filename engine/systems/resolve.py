@@ -15,6 +15,6 @@ class ResolveProcessor(esper.Processor):
         self.friction = "friction" in res.config.effects
 
     def process(self) -> None:
-        manifolds = self.contacts.manifolds
-        if manifolds:
-            self.stats.cold_restarts += solver.solve(manifolds, self.config.knobs, self.config.dt, self.friction)
+        table = self.contacts.table
+        if len(table):
+            self.stats.cold_restarts += solver.solve(table, self.config.knobs, self.config.dt, self.friction)

@@ -15,5 +15,6 @@ class RestitutionProcessor(esper.Processor):
         self.contacts, self.stats = res.contacts, res.stats
 
     def process(self) -> None:
-        if self.contacts.manifolds:
-            self.stats.bounces += solver.apply_restitution(self.contacts.manifolds, RESTITUTION_THRESHOLD)
+        table = self.contacts.table
+        if len(table):
+            self.stats.bounces += solver.apply_restitution(table, RESTITUTION_THRESHOLD)

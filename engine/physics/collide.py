@@ -270,6 +270,49 @@ def bodies_wall_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reac
     return out[:kept]
 
 
+@kernel
+def bodies_pair_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first: np.ndarray,
+                         pairs: np.ndarray, poses: np.ndarray, radius: np.ndarray, margin: float
+                         ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Contact rows between the bodies of each pair (shapes pairs[g] of a `geometry.ShapeTable`, at
+    poses[q] = x, y, angle, bounding radii radius[q]), A's pieces in the outer loop (`collide_sets`);
+    pairs farther apart than their radii and the margin are not looked at. Returns the rows (pair g's
+    are rows[pair_first[g]:pair_first[g + 1]], each with g in column BODY), pair_first, and each
+    pair's smallest separation (a gap; 0 for a pair without rows)."""
+    total = 0
+    for g in range(len(pairs)):
+        a, b = pairs[g, 0], pairs[g, 1]
+        total += 2 * (body_first[a + 1] - body_first[a]) * (body_first[b + 1] - body_first[b])
+    out = np.empty((total, ROW))
+    pair_first = np.zeros(len(pairs) + 1, dtype=np.int64)
+    gaps = np.zeros(len(pairs))
+    rows = 0
+    for g in range(len(pairs)):
+        a, b = pairs[g, 0], pairs[g, 1]
+        pair_first[g] = rows
+        reach = radius[a] + radius[b] + margin
+        dx, dy = poses[a, 0] - poses[b, 0], poses[a, 1] - poses[b, 1]
+        if dx ** 2 + dy ** 2 > reach * reach:
+            continue
+        a0, a1, b0, b1 = body_first[a], body_first[a + 1], body_first[b], body_first[b + 1]
+        va, na = np.empty((first[a1] - first[a0], 2)), np.empty((first[a1] - first[a0], 2))
+        vb, nb = np.empty((first[b1] - first[b0], 2)), np.empty((first[b1] - first[b0], 2))
+        pose_piece(lv, ln, first[a0], first[a1], poses[a, 0], poses[a, 1], poses[a, 2], va, na)
+        pose_piece(lv, ln, first[b0], first[b1], poses[b, 0], poses[b, 1], poses[b, 2], vb, nb)
+        made = collide_sets(va, na, first[a0:a1 + 1] - first[a0], vb, nb, first[b0:b1 + 1] - first[b0],
+                            np.arange(b1 - b0), NO_SEAMS, NO_SEAMS, False, margin, False, out[rows:])
+        if made:
+            lowest = out[rows, SEP]
+            for k in range(rows, rows + made):
+                out[k, BODY] = g
+                if out[k, SEP] < lowest:
+                    lowest = out[k, SEP]
+            gaps[g] = lowest
+        rows += made
+    pair_first[len(pairs)] = rows
+    return out[:rows], pair_first, gaps
+
+
 # --- the same for callers holding vertex lists (tests, tools) ---------------------------------------
 
 @dataclass(slots=True)
@@ -341,3 +384,7 @@ def _warm() -> None:
                          table.body_first, np.zeros(1, dtype=np.int64), np.array([[0.0, 0.0, 0.0, 0.0, 1.0, 0.0]]),
                          np.zeros(1, dtype=np.bool_), np.array([0, 1], dtype=np.int64), np.zeros(1, dtype=np.int64),
                          walls, 1.0 / 240.0, 0.01)
+    two = ShapeTable.of([ConvexSet.of([square], [normals])] * 2)
+    bodies_pair_contacts(two.pieces.verts, two.pieces.normals, two.pieces.first, two.body_first,
+                         np.array([[0, 1]], dtype=np.int64), np.array([[0.0, 0.0, 0.0], [0.0, 0.99, 0.0]]),
+                         np.full(2, 0.71), 0.01)

@@ -191,6 +191,17 @@ def rewind(state: np.ndarray, rows: np.ndarray, hits: np.ndarray) -> int:
 
 
 @kernel
+def wake_pairs(state: np.ndarray, pairs: np.ndarray) -> None:
+    """Pair by pair, in order: if either body is at rest, wake both (a body that touches a moving one
+    is moving again)."""
+    for g in range(pairs.shape[0]):
+        a, b = pairs[g, 0], pairs[g, 1]
+        if state[a, ASLEEP] != 0.0 or state[b, ASLEEP] != 0.0:
+            state[a, ASLEEP] = state[b, ASLEEP] = 0.0
+            state[a, STILL_TIME] = state[b, STILL_TIME] = 0.0
+
+
+@kernel
 def came_to_rest(state: np.ndarray, rows: np.ndarray, was_asleep: np.ndarray, out: np.ndarray) -> int:
     """The bodies of `rows` (indices into it, into `out`) at rest now that were not when `was_asleep`
     was last updated (it is, here). Returns how many."""
@@ -220,3 +231,4 @@ def _warm() -> None:
     kinetic_energy(state)
     came_to_rest(state, rows, np.zeros(2, dtype=np.bool_), np.empty(2, dtype=np.int64))
     rewind(state, rows, np.array([0.5, 1.0]))
+    wake_pairs(state, np.array([[0, 1]], dtype=np.int64))

@@ -6,8 +6,10 @@ import numpy as np
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.body import ANGLE, SPIN, VX, VY, X, Y
-from polygolf.engine.physics.collide import NO_SEAMS, ROW, SEP, bodies_wall_contacts, collide_sets
+from polygolf.engine.physics.collide import ROW, bodies_pair_contacts, bodies_wall_contacts
 from polygolf.engine.physics.contact import ContactTable, build_contacts, carry_impulses
+from polygolf.engine.physics.geometry import ShapeTable
+from polygolf.engine.physics.motion import wake_pairs
 from polygolf.engine.physics.settings import CONTACT_MARGIN, GAP_TOLERANCE, RESTITUTION_THRESHOLD
 from polygolf.engine.physics.toi import pair_reaches
 
@@ -41,30 +43,38 @@ class NarrowphaseProcessor(esper.Processor):
 
         # Pairs first (added after the walls, as always): a body another one presses on this substep
         # can be pushed into a wall it is not moving towards yet, so its wall gaps must stay contacts.
-        pairs, gapped, near = [], [], []
-        for ea, eb in self.candidates.pairs:
-            a, col_a = esper.component_for_entity(ea, Body), esper.component_for_entity(ea, Collider)
-            b, col_b = esper.component_for_entity(eb, Body), esper.component_for_entity(eb, Collider)
-            reach = col_a.radius + col_b.radius + CONTACT_MARGIN
-            if (a.x - b.x) ** 2 + (a.y - b.y) ** 2 > reach * reach:
-                continue
-            rows = _body_rows(col_a, a, col_b, b)
-            if len(rows):
-                pairs.append((ea, eb, a, b, rows))
-                near.append((col_a, col_b, min(rows[:, SEP].tolist())))
-        # A body with something else near (a wall or another body) may be halted by it in the solve.
-        busy = Counter(e for ea, eb, *_ in pairs for e in (ea, eb))
-        if pairs:
+        everyone = esper.get_components(Body, Collider)
+        table, _ = self.shapes.of(everyone)
+        store_rows = self.shapes.rows(self.bodies, everyone)
+        pair_rows, pair_first, pairs, gaps = _NO_PAIRS[0], _NO_PAIRS[1], _NO_PAIRS[2], np.zeros(0)
+        if self.candidates.pairs:
+            candidates = self.shapes.index(np.array(self.candidates.pairs, dtype=np.int64))
+            pair_rows, pair_first, gaps = bodies_pair_contacts(
+                table.pieces.verts, table.pieces.normals, table.pieces.first, table.body_first, candidates,
+                state[store_rows][:, [X, Y, ANGLE]], self.shapes.radius, CONTACT_MARGIN)
+            touching = pair_first[1:] > pair_first[:-1]
+            pairs, gaps = candidates[touching], gaps[touching]
+            pair_rows = pair_rows[np.repeat(touching, pair_first[1:] - pair_first[:-1])]
+            pair_first = np.concatenate(([0], np.cumsum((pair_first[1:] - pair_first[:-1])[touching])))
+        ents = self.shapes.ents
+        pair_ents = ents[pairs].tolist()
+        gapped = [False] * len(pair_ents)
+        if (gaps > GAP_TOLERANCE).any():
+            # A body with something else near (a wall or another body) may be halted by it in the solve.
+            busy = Counter(e for ea, eb in pair_ents for e in (ea, eb))
             busy.update(self.candidates.near.tolist())
-        for (ea, eb, a, b, _), (col_a, col_b, gap) in zip(pairs, near):
-            gapped.append(gap > GAP_TOLERANCE and not pair_reaches(
-                *_arrays(col_a), col_a.radius, _pose(a), _velocity(a), *_arrays(col_b), col_b.radius, _pose(b),
-                _velocity(b), dt, gap, busy[ea] > 1, busy[eb] > 1))
-        pressed = {e for (ea, eb, *_), gap in zip(pairs, gapped) if not gap for e in (ea, eb)}
-        grew = bool(pressed)
+            for k in np.flatnonzero(gaps > GAP_TOLERANCE).tolist():
+                (qa, qb), (ea, eb) = pairs[k], pair_ents[k]
+                gapped[k] = not pair_reaches(
+                    *_arrays(table, qa), self.shapes.radius[qa], state[store_rows[qa], X:ANGLE + 1].copy(),
+                    state[store_rows[qa], VX:SPIN + 1].copy(), *_arrays(table, qb), self.shapes.radius[qb],
+                    state[store_rows[qb], X:ANGLE + 1].copy(), state[store_rows[qb], VX:SPIN + 1].copy(), dt,
+                    float(gaps[k]), busy[ea] > 1, busy[eb] > 1)
+        pressed = {e for (ea, eb), gap in zip(pair_ents, gapped) if not gap for e in (ea, eb)}
+        grew = bool(pressed) and any(gapped)
         while grew:  # through a chain of gaps, a push can reach: keep those contacts too
             grew = False
-            for k, (ea, eb, *_) in enumerate(pairs):
+            for k, (ea, eb) in enumerate(pair_ents):
                 if gapped[k] and (ea in pressed or eb in pressed):
                     gapped[k], grew = False, True
                     pressed |= {ea, eb}
@@ -73,10 +83,8 @@ class NarrowphaseProcessor(esper.Processor):
         walls = _NO_WALLS
         near_walls = self.candidates.near
         if len(near_walls):
-            everyone = esper.get_components(Body, Collider)
-            table, _ = self.shapes.of(everyone)
             rows_of_near = self.shapes.index(near_walls)
-            near_rows = self.shapes.rows(self.bodies, everyone)[rows_of_near]
+            near_rows = store_rows[rows_of_near]
             held = np.array([ent in pressed for ent in near_walls.tolist()], dtype=np.bool_).reshape(-1)
             wall_rows = bodies_wall_contacts(
                 table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
@@ -84,22 +92,16 @@ class NarrowphaseProcessor(esper.Processor):
                 held, self.candidates.near_first, self.candidates.near_found, self.statics.arrays, dt,
                 CONTACT_MARGIN)
             walls = (wall_rows, near_walls, near_rows, self.shapes.materials[rows_of_near])
-        kept = [(ea, eb, a, b, rows, col_a, col_b) for (ea, eb, a, b, rows), gap, (col_a, col_b, _)
-                in zip(pairs, gapped, near) if not gap]  # as for walls: bodies that will not meet do not touch
         pair_groups = _NO_PAIRS
-        if kept:
-            for _, _, a, b, *_ in kept:
-                if a.asleep or b.asleep:
-                    a.wake()
-                    b.wake()
-            store_rows = self.bodies.rows
-            first = np.zeros(len(kept) + 1, dtype=np.int64)
-            first[1:] = np.cumsum([len(rows) for *_, rows, _, _ in kept])
-            pair_groups = (np.concatenate([rows for *_, rows, _, _ in kept]), first,
-                        np.array([(ea, eb) for ea, eb, *_ in kept], dtype=np.int64),
-                        np.array([(store_rows[ea], store_rows[eb]) for ea, eb, *_ in kept], dtype=np.int64),
-                        np.array([(col_a.material.restitution, col_a.material.friction, col_b.material.restitution,
-                                   col_b.material.friction) for *_, col_a, col_b in kept], dtype=np.float64))
+        kept = ~np.array(gapped, dtype=np.bool_).reshape(-1)  # as for walls: bodies that will not meet do not touch
+        if kept.any():
+            pairs, counts = pairs[kept], (pair_first[1:] - pair_first[:-1])[kept]
+            body_rows = store_rows[pairs]
+            wake_pairs(state, body_rows)
+            pair_groups = (pair_rows[np.repeat(kept, pair_first[1:] - pair_first[:-1])],
+                           np.concatenate(([0], np.cumsum(counts))).astype(np.int64), ents[pairs], body_rows,
+                           np.concatenate((self.shapes.materials[pairs[:, 0]], self.shapes.materials[pairs[:, 1]]),
+                                          axis=1))
 
         if not len(walls[0]) and pair_groups is _NO_PAIRS:
             self.contacts.table = self._empty  # nothing touches: no kernel call (most substeps of a lone ball)
@@ -118,24 +120,9 @@ class NarrowphaseProcessor(esper.Processor):
         self.contacts.table = new
 
 
-def _arrays(col: Collider) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    shape = col.shape
-    return shape.verts, shape.normals, shape.first, shape.reach
-
-
-def _pose(body: Body) -> np.ndarray:
-    return np.array((body.x, body.y, body.angle))
-
-
-def _velocity(body: Body) -> np.ndarray:
-    return np.array((body.vx, body.vy, body.spin))
-
-
-def _body_rows(col_a: Collider, a: Body, col_b: Collider, b: Body) -> np.ndarray:
-    """Contact rows between two bodies, A's pieces in the outer loop."""
-    va, na = col_a.posed(a.x, a.y, a.angle)
-    vb, nb = col_b.posed(b.x, b.y, b.angle)
-    out = np.empty((2 * len(col_a.shape) * len(col_b.shape), ROW))
-    count = collide_sets(va, na, col_a.shape.first, vb, nb, col_b.shape.first, col_b.shape.every_piece,
-                         NO_SEAMS, NO_SEAMS, False, CONTACT_MARGIN, False, out)
-    return out[:count]
+def _arrays(table: ShapeTable, q: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Body q's pieces in its own frame, from the table (as its collider holds them)."""
+    p0, p1 = table.body_first[q], table.body_first[q + 1]
+    v0, v1 = table.pieces.first[p0], table.pieces.first[p1]
+    return table.pieces.verts[v0:v1], table.pieces.normals[v0:v1], table.pieces.first[p0:p1 + 1] - v0, \
+        table.pieces.reach[p0:p1]

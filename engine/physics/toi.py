@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 
-from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, COLUMNS, INV_MASS, X0, Y0, X, Y
+from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, COLUMNS, INV_MASS, SPIN, X0, Y0, X, Y
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
 from polygolf.engine.physics.grid import BoxGrid, overlapping
 from polygolf.engine.physics.jit import kernel, warm_up
@@ -231,6 +231,59 @@ def first_pair_hit(lva: np.ndarray, lna: np.ndarray, fa: np.ndarray, ra: np.ndar
 
 
 @kernel
+def body_pair_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
+                   pairs: np.ndarray, state: np.ndarray, rows: np.ndarray, radius: np.ndarray, thickness: np.ndarray,
+                   meet: bool, slop: float, target: float, tolerance: float, allowance: float, hits: np.ndarray,
+                   arm_hits: np.ndarray) -> int:
+    """Continuous collision between bodies: for each pair (shapes of a `ShapeTable`, rows `rows[q]`
+    of a `body.BodyStore` state, swept from the substep's start to now) of which one is moving (awake
+    and dynamic, or kinematic and turning), a dynamic one (with `meet`, or only against a kinematic
+    one), and whose relative step could matter (any beyond `slop` against a kinematic body; between
+    two dynamic ones, half the thinner's width), the earliest impact; it goes into `hits[q]` of
+    each awake dynamic body of the pair and, for a pair with a kinematic body, into `arm_hits[g]`
+    (else 1.0) for the caller to judge the arm. Returns how many pairs hit."""
+    count = 0
+    for g in range(len(pairs)):
+        arm_hits[g] = 1.0
+        a, b = pairs[g, 0], pairs[g, 1]
+        ka, kb = rows[a], rows[b]
+        dyn_a, dyn_b = state[ka, INV_MASS] != 0.0, state[kb, INV_MASS] != 0.0
+        if not (dyn_a or dyn_b) or (dyn_a and dyn_b and not meet):
+            continue
+        moving_a = (state[ka, ASLEEP] == 0.0 and state[ka, INV_MASS] > 0.0) or (
+            not dyn_a and state[ka, SPIN] != 0.0)
+        moving_b = (state[kb, ASLEEP] == 0.0 and state[kb, INV_MASS] > 0.0) or (
+            not dyn_b and state[kb, SPIN] != 0.0)
+        if not (moving_a or moving_b):
+            continue  # a resting ball is swept only against a turning windmill (which it may stall)
+        kinematic_pair = not (dyn_a and dyn_b)
+        limit = slop if kinematic_pair else 0.5 * min(thickness[a], thickness[b])
+        travel = (math.hypot(state[ka, X] - state[ka, X0] - state[kb, X] + state[kb, X0],
+                             state[ka, Y] - state[ka, Y0] - state[kb, Y] + state[kb, Y0])
+                  + abs(state[ka, ANGLE] - state[ka, ANGLE0]) * radius[a]
+                  + abs(state[kb, ANGLE] - state[kb, ANGLE0]) * radius[b])
+        if travel < limit:
+            continue
+        pa0, pa1, pb0, pb1 = body_first[a], body_first[a + 1], body_first[b], body_first[b + 1]
+        va0, va1, vb0, vb1 = first[pa0], first[pa1], first[pb0], first[pb1]
+        hit = first_pair_hit(lv[va0:va1], ln[va0:va1], first[pa0:pa1 + 1] - va0, reach[pa0:pa1],
+                             np.array((state[ka, X0], state[ka, Y0], state[ka, ANGLE0])),
+                             np.array((state[ka, X], state[ka, Y], state[ka, ANGLE])),
+                             lv[vb0:vb1], ln[vb0:vb1], first[pb0:pb1 + 1] - vb0, reach[pb0:pb1],
+                             np.array((state[kb, X0], state[kb, Y0], state[kb, ANGLE0])),
+                             np.array((state[kb, X], state[kb, Y], state[kb, ANGLE])), target, tolerance, allowance)
+        if hit < 1.0:
+            count += 1
+            if dyn_a and state[ka, ASLEEP] == 0.0 and hit < hits[a]:
+                hits[a] = hit
+            if dyn_b and state[kb, ASLEEP] == 0.0 and hit < hits[b]:
+                hits[b] = hit
+            if kinematic_pair:
+                arm_hits[g] = hit
+    return count
+
+
+@kernel
 def reaches_wall(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, x: float, y: float,
                  angle: float, vx: float, vy: float, spin: float, dt: float, wv: np.ndarray, wn: np.ndarray, ws: int,
                  we: int) -> bool:
@@ -311,5 +364,8 @@ def _warm() -> None:
                     np.zeros(1, dtype=np.bool_), np.empty(1, dtype=np.int64), wall.verts, wall.normals, wall.first,
                     0.005, 0.001, 0.005)
     first_pair_hit(*args, start, end, *args, still, still, 0.005, 0.001, 0.005)
+    body_pair_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
+                   table.body_first, np.array([[0, 1]], dtype=np.int64), state, np.array([0, 1], dtype=np.int64),
+                   np.full(2, 0.71), np.full(2, 1.0), True, 0.005, 0.005, 0.001, 0.005, np.ones(2), np.ones(1))
     reaches_wall(*args, 0.0, 0.0, 0.0, 2.0, 0.0, 0.5, 1.0 / 240.0, wall.verts, wall.normals, 0, 4)
     pair_reaches(*args, 0.7, start, end, *args, 0.7, still, end, 1.0 / 240.0, 0.01, True, True)

@@ -5,11 +5,13 @@ import numpy as np
 
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
+from polygolf.engine.physics.body import INV_MASS
 from polygolf.engine.physics.collide import NO_SEAMS, max_separation
+from polygolf.engine.physics.geometry import ShapeTable
 from polygolf.engine.physics.grid import body_pairs
 from polygolf.engine.physics.motion import rewind
 from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP, TOI_TARGET
-from polygolf.engine.physics.toi import first_pair_hit, first_wall_hits
+from polygolf.engine.physics.toi import body_pair_hits, first_wall_hits
 
 
 class CCDProcessor(esper.Processor):
@@ -43,7 +45,7 @@ class CCDProcessor(esper.Processor):
             walls.verts, walls.normals, walls.first, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP)
         # No pair can need sweeping while no body steps half the linear slop.
         if len(bodies) > 1 and longest >= 0.5 * LINEAR_SLOP:
-            count += self._body_hits(rows, hits)
+            count += self._body_hits(table, rows, hits)
         if count:
             self.stats.toi_hits += rewind(state, rows, hits)
 
@@ -82,59 +84,24 @@ class CCDProcessor(esper.Processor):
                     return True
         return False
 
-    def _body_hits(self, rows: np.ndarray, hits: np.ndarray) -> int:
+    def _body_hits(self, table: ShapeTable, rows: np.ndarray, hits: np.ndarray) -> int:
         """Pairs of bodies whose swept boxes overlap and that move fast relative to each other: each
-        one's earliest impact goes into `hits` (by its index in `rows`). Returns how many pairs hit."""
-        meet = self.config.collide_bodies
-        index = self.shapes.of(esper.get_components(Body, Collider))[1]
-        count = 0
-        found = body_pairs(self.bodies.state, rows, self.shapes.radius, TOI_TARGET, True, meet, True)
-        candidates = [(a, b) if a < b else (b, a) for a, b in self.shapes.ents[found].tolist()]
-        for ea, eb in sorted(candidates):
-            a, col_a = esper.component_for_entity(ea, Body), esper.component_for_entity(ea, Collider)
-            b, col_b = esper.component_for_entity(eb, Body), esper.component_for_entity(eb, Collider)
-            if not (a.inv_mass or b.inv_mass) or (a.inv_mass and b.inv_mass and not meet):
-                continue
-            if not (_moving(a) or _moving(b)):
-                continue  # a resting ball is swept only against a turning windmill (which it may stall)
-            # Against a kinematic body (a windmill's arm) any step beyond the slop is swept, as against
-            # a wall; two dynamic bodies only when their steps could carry one half through the other
-            # (cheaper in a crowd; the discrete contact then parts the overlap that is left).
-            kinematic_pair = not (a.inv_mass and b.inv_mass)
-            limit = LINEAR_SLOP if kinematic_pair else 0.5 * min(col_a.thickness, col_b.thickness)
-            if _relative_travel(a, col_a, b, col_b) < limit:
-                continue
-            sa, sb = col_a.shape, col_b.shape
-            hit = first_pair_hit(sa.verts, sa.normals, sa.first, sa.reach, _start(a), _end(a), sb.verts, sb.normals,
-                                 sb.first, sb.reach, _start(b), _end(b), TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP)
-            if hit < 1.0:
-                count += 1
-                for ent, body in ((ea, a), (eb, b)):
-                    if body.inv_mass and not body.asleep:
-                        hits[index[ent]] = min(hits[index[ent]], hit)
-                if kinematic_pair:
-                    (arm, arm_ent, arm_col), (ball, col) = (((a, ea, col_a), (b, col_b)) if not a.inv_mass
-                                                            else ((b, eb, col_b), (a, col_a)))
-                    if self._pinched(ball, col, arm, arm_col, hit):
-                        hits[index[arm_ent]] = min(hits[index[arm_ent]], hit)
+        one's earliest impact goes into `hits` (by its index in `rows`); a windmill's arm that would
+        crush the ball it meets stalls too. Returns how many pairs hit."""
+        pairs = body_pairs(self.bodies.state, rows, self.shapes.radius, TOI_TARGET, True, self.config.collide_bodies,
+                           True)
+        arm_hits = np.empty(len(pairs))
+        count = body_pair_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
+                               table.body_first, pairs, self.bodies.state, rows, self.shapes.radius,
+                               self.shapes.thickness, self.config.collide_bodies, LINEAR_SLOP, TOI_TARGET,
+                               0.25 * LINEAR_SLOP, LINEAR_SLOP, hits, arm_hits)
+        for g in np.flatnonzero(arm_hits < 1.0).tolist() if count else ():
+            hit = float(arm_hits[g])
+            a, b = pairs[g].tolist()
+            arm, ball = (a, b) if self.bodies.state[rows[a], INV_MASS] == 0.0 else (b, a)
+            arm_ent, ball_ent = self.shapes.ents[arm], self.shapes.ents[ball]
+            if self._pinched(esper.component_for_entity(ball_ent, Body), esper.component_for_entity(ball_ent, Collider),
+                             esper.component_for_entity(arm_ent, Body), esper.component_for_entity(arm_ent, Collider),
+                             hit):
+                hits[arm] = min(hits[arm], hit)
         return count
-
-
-def _start(body: Body) -> np.ndarray:
-    s = body.scratch
-    return np.array((s.x0, s.y0, s.angle0))
-
-
-def _end(body: Body) -> np.ndarray:
-    return np.array((body.x, body.y, body.angle))
-
-
-def _moving(body: Body) -> bool:
-    """Awake and dynamic, or kinematic and turning."""
-    return (not body.asleep and body.inv_mass > 0.0) or (body.inv_mass == 0.0 and body.spin != 0.0)
-
-
-def _relative_travel(a: Body, col_a: Collider, b: Body, col_b: Collider) -> float:
-    sa, sb = a.scratch, b.scratch
-    return (math.hypot(a.x - sa.x0 - b.x + sb.x0, a.y - sa.y0 - b.y + sb.y0)
-            + abs(a.angle - sa.angle0) * col_a.radius + abs(b.angle - sb.angle0) * col_b.radius)

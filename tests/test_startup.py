@@ -274,3 +274,41 @@ def test_physics_tests_pass_with_the_kernels_interpreted():
     assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-2000:]
     assert " passed" in result.stdout and "skipped" not in result.stdout
     assert time.perf_counter() - started < 120, "the interpreted subset should stay well under a minute"
+
+
+# --- the warm-ups cover the engine -------------------------------------------------------------------
+
+def _signatures() -> dict[str, list]:
+    import importlib
+
+    from numba.core.registry import CPUDispatcher
+
+    found = {}
+    for name in jit.KERNEL_MODULES:
+        for attr, value in vars(importlib.import_module(name)).items():
+            if isinstance(value, CPUDispatcher):
+                found[f"{name}.{attr}"] = list(value.signatures)
+    return found
+
+
+@pytest.mark.skipif(not jit.COMPILED, reason="nothing is compiled with the kernels interpreted")
+def test_stepping_compiles_nothing_the_warm_ups_did_not():
+    """Every argument type the engine passes a kernel was compiled (or loaded) by the warm-ups: a
+    first launch compiles everything behind the loading screen, never in the middle of a shot."""
+    from polygolf.engine.golf.scenes import build_scene_file, find_hole
+    from polygolf.engine.golf.shots import fan, simulate_shots
+    from polygolf.engine.loading.scene import ShapeSpec
+    from polygolf.engine.physics.presets import Knobs
+
+    jit.compile_kernels()
+    before = _signatures()
+    for scene in sorted(SCENES_DIR.glob("*.yaml")):
+        for knobs in ("balanced", Knobs(substeps=2, iterations=4, position_correction="ngs", warm_start=False)):
+            with build_scene_file(scene, knobs) as sim:
+                sim.run(1.0)
+    for name in ("hazards:6", "meadow:8", "hazards:2"):  # a windmill, bumpers, water
+        hole = find_hole(name, ROOT)
+        simulate_shots(hole, ShapeSpec(star=(5, 2), radius=1.0), fan(hole.layout.tee, 6, [1.0, 3.0]), "fast",
+                       max_seconds=4.0, path=True)
+    added = {name: [s for s in sigs if s not in before.get(name, [])] for name, sigs in _signatures().items()}
+    assert not {name: new for name, new in added.items() if new}

@@ -123,7 +123,11 @@ class Candidates:
     near: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
     near_first: np.ndarray = field(default_factory=lambda: np.zeros(1, dtype=np.int64))
     near_found: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
-    pairs: list[tuple[int, int]] = field(default_factory=list)
+    pair_ents: np.ndarray = field(default_factory=lambda: np.zeros((0, 2), dtype=np.int64))  # (a, b), a < b, sorted
+
+    @property
+    def pairs(self) -> list[tuple[int, int]]:
+        return [(a, b) for a, b in self.pair_ents.tolist()]
 
     @property
     def walls(self) -> dict[int, np.ndarray]:

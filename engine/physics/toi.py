@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 
-from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, COLUMNS, INV_MASS, SPIN, X0, Y0, X, Y
+from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, COLUMNS, INV_MASS, SPIN, VX, VY, X0, Y0, X, Y
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
 from polygolf.engine.physics.grid import BoxGrid, overlapping
 from polygolf.engine.physics.jit import kernel, warm_up
@@ -346,6 +346,53 @@ def pair_reaches(lva: np.ndarray, lna: np.ndarray, fa: np.ndarray, ra: np.ndarra
     return False
 
 
+@kernel
+def pairs_apart(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
+                pairs: np.ndarray, gaps: np.ndarray, state: np.ndarray, rows: np.ndarray, radius: np.ndarray,
+                near_walls: np.ndarray, dt: float, apart: np.ndarray, pressed: np.ndarray) -> None:
+    """The gap test for touching body pairs (shapes of a `ShapeTable` at rows `rows[q]` of a
+    `body.BodyStore` state; gaps[g] the pair's smallest separation): `apart[g]` when the gap is
+    wider than GAP_TOLERANCE and `pair_reaches` says the two would not close it this substep (a body
+    may be halted if it has something else near: another pair, or `near_walls[q]`), unless a push
+    can reach it through a chain of pairs that do touch. `pressed[q]`: the body is in a pair that
+    touches (or is pushed through such a chain)."""
+    busy = np.zeros(len(rows), dtype=np.int64)
+    for g in range(len(pairs)):
+        busy[pairs[g, 0]] += 1
+        busy[pairs[g, 1]] += 1
+    if len(pairs):
+        for q in range(len(rows)):
+            if near_walls[q]:
+                busy[q] += 1
+    for g in range(len(pairs)):
+        apart[g] = False
+        if not gaps[g] > GAP_TOLERANCE:
+            continue
+        a, b = pairs[g, 0], pairs[g, 1]
+        ka, kb = rows[a], rows[b]
+        pa0, pa1, pb0, pb1 = body_first[a], body_first[a + 1], body_first[b], body_first[b + 1]
+        va0, va1, vb0, vb1 = first[pa0], first[pa1], first[pb0], first[pb1]
+        apart[g] = not pair_reaches(
+            lv[va0:va1], ln[va0:va1], first[pa0:pa1 + 1] - va0, reach[pa0:pa1], radius[a],
+            np.array((state[ka, X], state[ka, Y], state[ka, ANGLE])),
+            np.array((state[ka, VX], state[ka, VY], state[ka, SPIN])),
+            lv[vb0:vb1], ln[vb0:vb1], first[pb0:pb1 + 1] - vb0, reach[pb0:pb1], radius[b],
+            np.array((state[kb, X], state[kb, Y], state[kb, ANGLE])),
+            np.array((state[kb, VX], state[kb, VY], state[kb, SPIN])), dt, gaps[g], busy[a] > 1, busy[b] > 1)
+    pressed[:] = False
+    grew = False
+    for g in range(len(pairs)):
+        if not apart[g]:
+            pressed[pairs[g, 0]] = pressed[pairs[g, 1]] = True
+            grew = True
+    while grew:  # through a chain of gaps, a push can reach: keep those contacts too
+        grew = False
+        for g in range(len(pairs)):
+            if apart[g] and (pressed[pairs[g, 0]] or pressed[pairs[g, 1]]):
+                apart[g], grew = False, True
+                pressed[pairs[g, 0]] = pressed[pairs[g, 1]] = True
+
+
 @warm_up("continuous collision")
 def _warm() -> None:
     square = ConvexSet.of([((0.5, -0.5), (0.5, 0.5), (-0.5, 0.5), (-0.5, -0.5))],
@@ -367,5 +414,9 @@ def _warm() -> None:
     body_pair_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                    table.body_first, np.array([[0, 1]], dtype=np.int64), state, np.array([0, 1], dtype=np.int64),
                    np.full(2, 0.71), np.full(2, 1.0), True, 0.005, 0.005, 0.001, 0.005, np.ones(2), np.ones(1))
+    pairs_apart(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
+                np.array([[0, 1]], dtype=np.int64), np.array([0.01]), state, np.array([0, 1], dtype=np.int64),
+                np.full(2, 0.71), np.zeros(2, dtype=np.bool_), 1.0 / 240.0, np.zeros(1, dtype=np.bool_),
+                np.zeros(2, dtype=np.bool_))
     reaches_wall(*args, 0.0, 0.0, 0.0, 2.0, 0.0, 0.5, 1.0 / 240.0, wall.verts, wall.normals, 0, 4)
     pair_reaches(*args, 0.7, start, end, *args, 0.7, still, end, 1.0 / 240.0, 0.01, True, True)

@@ -1,4 +1,5 @@
 import esper
+import numpy as np
 
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
@@ -26,10 +27,10 @@ class BroadphaseProcessor(esper.Processor):
                                          *self.statics.grid.arrays)
         candidates = self.candidates
         candidates.near, candidates.near_first, candidates.near_found = ents[near], first, found
-        pairs: list[tuple[int, int]] = []
+        pairs = np.zeros((0, 2), dtype=np.int64)
         if len(bodies) > 1:
-            found = body_pairs(self.bodies.state, rows, self.shapes.radius, CONTACT_MARGIN, False,
-                               self.config.collide_bodies, False)
-            if len(found):
-                pairs = sorted((a, b) if a < b else (b, a) for a, b in ents[found].tolist())
-        self.candidates.pairs = pairs  # in entity order, whichever way they were found
+            found = ents[body_pairs(self.bodies.state, rows, self.shapes.radius, CONTACT_MARGIN, False,
+                                    self.config.collide_bodies, False)]
+            low, high = found.min(axis=1, initial=np.iinfo(np.int64).max), found.max(axis=1, initial=-1)
+            pairs = np.stack((low, high), axis=1)[np.lexsort((high, low))]
+        self.candidates.pair_ents = pairs  # in entity order, whichever way they were found

@@ -1,17 +1,15 @@
-from collections import Counter
 
 import esper
 import numpy as np
 
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
-from polygolf.engine.physics.body import ANGLE, SPIN, VX, VY, X, Y
+from polygolf.engine.physics.body import ANGLE, SPIN, X
 from polygolf.engine.physics.collide import ROW, bodies_pair_contacts, bodies_wall_contacts
 from polygolf.engine.physics.contact import ContactTable, build_contacts, carry_impulses
-from polygolf.engine.physics.geometry import ShapeTable
 from polygolf.engine.physics.motion import wake_pairs
-from polygolf.engine.physics.settings import CONTACT_MARGIN, GAP_TOLERANCE, RESTITUTION_THRESHOLD
-from polygolf.engine.physics.toi import pair_reaches
+from polygolf.engine.physics.settings import CONTACT_MARGIN, RESTITUTION_THRESHOLD
+from polygolf.engine.physics.toi import pairs_apart
 
 _NO_WALLS = (np.zeros((0, ROW)), np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64), np.zeros((0, 2)))
 _NO_PAIRS = (np.zeros((0, ROW)), np.zeros(1, dtype=np.int64), np.zeros((0, 2), dtype=np.int64),
@@ -47,37 +45,23 @@ class NarrowphaseProcessor(esper.Processor):
         table, _ = self.shapes.of(everyone)
         store_rows = self.shapes.rows(self.bodies, everyone)
         pair_rows, pair_first, pairs, gaps = _NO_PAIRS[0], _NO_PAIRS[1], _NO_PAIRS[2], np.zeros(0)
-        if self.candidates.pairs:
-            candidates = self.shapes.index(np.array(self.candidates.pairs, dtype=np.int64))
+        if len(self.candidates.pair_ents):
+            candidates = self.shapes.index(self.candidates.pair_ents)
             pair_rows, pair_first, gaps = bodies_pair_contacts(
                 table.pieces.verts, table.pieces.normals, table.pieces.first, table.body_first, candidates,
-                state[store_rows][:, [X, Y, ANGLE]], self.shapes.radius, CONTACT_MARGIN)
+                state[store_rows, X:ANGLE + 1], self.shapes.radius, CONTACT_MARGIN)
             touching = pair_first[1:] > pair_first[:-1]
             pairs, gaps = candidates[touching], gaps[touching]
             pair_rows = pair_rows[np.repeat(touching, pair_first[1:] - pair_first[:-1])]
             pair_first = np.concatenate(([0], np.cumsum((pair_first[1:] - pair_first[:-1])[touching])))
         ents = self.shapes.ents
-        pair_ents = ents[pairs].tolist()
-        gapped = [False] * len(pair_ents)
-        if (gaps > GAP_TOLERANCE).any():
-            # A body with something else near (a wall or another body) may be halted by it in the solve.
-            busy = Counter(e for ea, eb in pair_ents for e in (ea, eb))
-            busy.update(self.candidates.near.tolist())
-            for k in np.flatnonzero(gaps > GAP_TOLERANCE).tolist():
-                (qa, qb), (ea, eb) = pairs[k], pair_ents[k]
-                gapped[k] = not pair_reaches(
-                    *_arrays(table, qa), self.shapes.radius[qa], state[store_rows[qa], X:ANGLE + 1].copy(),
-                    state[store_rows[qa], VX:SPIN + 1].copy(), *_arrays(table, qb), self.shapes.radius[qb],
-                    state[store_rows[qb], X:ANGLE + 1].copy(), state[store_rows[qb], VX:SPIN + 1].copy(), dt,
-                    float(gaps[k]), busy[ea] > 1, busy[eb] > 1)
-        pressed = {e for (ea, eb), gap in zip(pair_ents, gapped) if not gap for e in (ea, eb)}
-        grew = bool(pressed) and any(gapped)
-        while grew:  # through a chain of gaps, a push can reach: keep those contacts too
-            grew = False
-            for k, (ea, eb) in enumerate(pair_ents):
-                if gapped[k] and (ea in pressed or eb in pressed):
-                    gapped[k], grew = False, True
-                    pressed |= {ea, eb}
+        apart, pressed = np.zeros(len(pairs), dtype=np.bool_), np.zeros(len(ents), dtype=np.bool_)
+        if len(pairs):
+            near_walls = np.zeros(len(ents), dtype=np.bool_)
+            near_walls[self.shapes.index(self.candidates.near)] = True
+            pairs_apart(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
+                        table.body_first, pairs, gaps, state, store_rows, self.shapes.radius, near_walls, dt, apart,
+                        pressed)
 
         # The contact rows against walls (body by body), then between bodies (pair by pair).
         walls = _NO_WALLS
@@ -85,15 +69,15 @@ class NarrowphaseProcessor(esper.Processor):
         if len(near_walls):
             rows_of_near = self.shapes.index(near_walls)
             near_rows = store_rows[rows_of_near]
-            held = np.array([ent in pressed for ent in near_walls.tolist()], dtype=np.bool_).reshape(-1)
+            held = pressed[rows_of_near]
             wall_rows = bodies_wall_contacts(
                 table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
-                rows_of_near, state[near_rows][:, [X, Y, ANGLE, VX, VY, SPIN]],
+                rows_of_near, state[near_rows, X:SPIN + 1],
                 held, self.candidates.near_first, self.candidates.near_found, self.statics.arrays, dt,
                 CONTACT_MARGIN)
             walls = (wall_rows, near_walls, near_rows, self.shapes.materials[rows_of_near])
         pair_groups = _NO_PAIRS
-        kept = ~np.array(gapped, dtype=np.bool_).reshape(-1)  # as for walls: bodies that will not meet do not touch
+        kept = ~apart  # as for walls: bodies that will not meet do not touch
         if kept.any():
             pairs, counts = pairs[kept], (pair_first[1:] - pair_first[:-1])[kept]
             body_rows = store_rows[pairs]
@@ -118,11 +102,3 @@ class NarrowphaseProcessor(esper.Processor):
             carry_impulses(old.ents, old.first, old.keys, old.points, new.ents, new.first, new.keys, new.points,
                            RESTITUTION_THRESHOLD)
         self.contacts.table = new
-
-
-def _arrays(table: ShapeTable, q: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Body q's pieces in its own frame, from the table (as its collider holds them)."""
-    p0, p1 = table.body_first[q], table.body_first[q + 1]
-    v0, v1 = table.pieces.first[p0], table.pieces.first[p1]
-    return table.pieces.verts[v0:v1], table.pieces.normals[v0:v1], table.pieces.first[p0:p1 + 1] - v0, \
-        table.pieces.reach[p0:p1]

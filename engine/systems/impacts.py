@@ -2,7 +2,7 @@ import esper
 import numpy as np
 
 from polygolf.engine.components import Bumper
-from polygolf.engine.components.resources import Resources
+from polygolf.engine.components.resources import HEARD_LIMIT, Resources
 from polygolf.engine.physics.contact import K_OTHER, P_APPROACH, P_X, P_Y
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 
@@ -26,7 +26,9 @@ class ImpactsProcessor(esper.Processor):
             return
         closing = np.flatnonzero(~resting)
         first = table.first
-        for k in np.unique(np.searchsorted(first, closing, side="right") - 1).tolist():
+        struck = np.unique(np.searchsorted(first, closing, side="right") - 1)
+        # Each of these manifolds is one impact, and a listener keeps only the last HEARD_LIMIT.
+        for k in struck[-HEARD_LIMIT:].tolist():
             speeds = approach[first[k]:first[k + 1]].tolist()
             fastest = min(range(len(speeds)), key=speeds.__getitem__)  # the first of the fastest
             if speeds[fastest] >= -RESTITUTION_THRESHOLD:

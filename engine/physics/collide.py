@@ -273,23 +273,23 @@ def bodies_wall_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reac
 @kernel
 def bodies_pair_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first: np.ndarray,
                          pairs: np.ndarray, poses: np.ndarray, radius: np.ndarray, margin: float
-                         ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+                         ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Contact rows between the bodies of each pair (shapes pairs[g] of a `geometry.ShapeTable`, at
     poses[q] = x, y, angle, bounding radii radius[q]), A's pieces in the outer loop (`collide_sets`);
-    pairs farther apart than their radii and the margin are not looked at. Returns the rows (pair g's
-    are rows[pair_first[g]:pair_first[g + 1]], each with g in column BODY), pair_first, and each
-    pair's smallest separation (a gap; 0 for a pair without rows)."""
+    pairs farther apart than their radii and the margin are not looked at. Returns, for the pairs
+    that have rows, in order: the rows (the t-th such pair's are rows[pair_first[t]:pair_first[t +
+    1]], each with t in column BODY), pair_first, the pairs, and each one's smallest separation."""
     total = 0
     for g in range(len(pairs)):
         a, b = pairs[g, 0], pairs[g, 1]
         total += 2 * (body_first[a + 1] - body_first[a]) * (body_first[b + 1] - body_first[b])
     out = np.empty((total, ROW))
     pair_first = np.zeros(len(pairs) + 1, dtype=np.int64)
-    gaps = np.zeros(len(pairs))
-    rows = 0
+    touching = np.empty((len(pairs), 2), dtype=np.int64)
+    gaps = np.empty(len(pairs))
+    rows = t = 0
     for g in range(len(pairs)):
         a, b = pairs[g, 0], pairs[g, 1]
-        pair_first[g] = rows
         reach = radius[a] + radius[b] + margin
         dx, dy = poses[a, 0] - poses[b, 0], poses[a, 1] - poses[b, 1]
         if dx ** 2 + dy ** 2 > reach * reach:
@@ -301,16 +301,53 @@ def bodies_pair_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body
         pose_piece(lv, ln, first[b0], first[b1], poses[b, 0], poses[b, 1], poses[b, 2], vb, nb)
         made = collide_sets(va, na, first[a0:a1 + 1] - first[a0], vb, nb, first[b0:b1 + 1] - first[b0],
                             np.arange(b1 - b0), NO_SEAMS, NO_SEAMS, False, margin, False, out[rows:])
-        if made:
-            lowest = out[rows, SEP]
-            for k in range(rows, rows + made):
-                out[k, BODY] = g
-                if out[k, SEP] < lowest:
-                    lowest = out[k, SEP]
-            gaps[g] = lowest
+        if made == 0:
+            continue
+        lowest = out[rows, SEP]
+        for k in range(rows, rows + made):
+            out[k, BODY] = t
+            if out[k, SEP] < lowest:
+                lowest = out[k, SEP]
+        touching[t, 0], touching[t, 1], gaps[t] = a, b, lowest
         rows += made
-    pair_first[len(pairs)] = rows
-    return out[:rows], pair_first, gaps
+        t += 1
+        pair_first[t] = rows
+    return out[:rows], pair_first[:t + 1].copy(), touching[:t].copy(), gaps[:t].copy()
+
+
+@kernel
+def kept_pairs(rows: np.ndarray, pair_first: np.ndarray, pairs: np.ndarray, apart: np.ndarray, ents: np.ndarray,
+               store_rows: np.ndarray, materials: np.ndarray
+               ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The pairs not `apart`, as the contact table takes them: their rows (column BODY renumbered),
+    pair_first, entities, store rows and materials (A's restitution and friction, then B's)."""
+    keep = 0
+    total = 0
+    for g in range(len(pairs)):
+        if not apart[g]:
+            keep += 1
+            total += pair_first[g + 1] - pair_first[g]
+    out = np.empty((total, rows.shape[1]))
+    first = np.zeros(keep + 1, dtype=np.int64)
+    pair_ents = np.empty((keep, 2), dtype=np.int64)
+    body_rows = np.empty((keep, 2), dtype=np.int64)
+    pair_materials = np.empty((keep, 4))
+    t = r = 0
+    for g in range(len(pairs)):
+        if apart[g]:
+            continue
+        a, b = pairs[g, 0], pairs[g, 1]
+        for k in range(pair_first[g], pair_first[g + 1]):
+            out[r] = rows[k]
+            out[r, BODY] = t
+            r += 1
+        pair_ents[t, 0], pair_ents[t, 1] = ents[a], ents[b]
+        body_rows[t, 0], body_rows[t, 1] = store_rows[a], store_rows[b]
+        pair_materials[t, 0], pair_materials[t, 1] = materials[a, 0], materials[a, 1]
+        pair_materials[t, 2], pair_materials[t, 3] = materials[b, 0], materials[b, 1]
+        t += 1
+        first[t] = r
+    return out, first, pair_ents, body_rows, pair_materials
 
 
 # --- the same for callers holding vertex lists (tests, tools) ---------------------------------------
@@ -385,6 +422,8 @@ def _warm() -> None:
                          np.zeros(1, dtype=np.bool_), np.array([0, 1], dtype=np.int64), np.zeros(1, dtype=np.int64),
                          walls, 1.0 / 240.0, 0.01)
     two = ShapeTable.of([ConvexSet.of([square], [normals])] * 2)
-    bodies_pair_contacts(two.pieces.verts, two.pieces.normals, two.pieces.first, two.body_first,
-                         np.array([[0, 1]], dtype=np.int64), np.array([[0.0, 0.0, 0.0], [0.0, 0.99, 0.0]]),
-                         np.full(2, 0.71), 0.01)
+    rows, pair_first, pairs, _ = bodies_pair_contacts(
+        two.pieces.verts, two.pieces.normals, two.pieces.first, two.body_first, np.array([[0, 1]], dtype=np.int64),
+        np.array([[0.0, 0.0, 0.0], [0.0, 0.99, 0.0]]), np.full(2, 0.71), 0.01)
+    kept_pairs(rows, pair_first, pairs, np.zeros(len(pairs), dtype=np.bool_), np.arange(2, dtype=np.int64),
+               np.arange(2, dtype=np.int64), np.ones((2, 2)))

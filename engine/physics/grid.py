@@ -234,6 +234,20 @@ def body_pairs(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, grow: fl
     return out[np.argsort(keys, kind="mergesort")]
 
 
+@kernel
+def by_entity(pairs: np.ndarray, ents: np.ndarray) -> np.ndarray:
+    """Pairs of indices as pairs of the entities `ents` names, each (smaller, larger), sorted: one
+    order, whatever order the bodies were listed in."""
+    out = np.empty((len(pairs), 2), dtype=np.int64)
+    top = 0
+    for g in range(len(pairs)):
+        a, b = ents[pairs[g, 0]], ents[pairs[g, 1]]
+        out[g, 0], out[g, 1] = min(a, b), max(a, b)
+        top = max(top, out[g, 1])
+    keys = out[:, 0] * (top + 1) + out[:, 1]
+    return out[np.argsort(keys, kind="mergesort")]
+
+
 class BoxGrid:
     """A uniform grid over a fixed set of boxes ((n, 4) float64)."""
 
@@ -283,5 +297,6 @@ def _warm() -> None:
     state[0, INV_MASS] = 1.0
     bodies_near(state, np.zeros(1, dtype=np.int64), np.ones(1), 0.01, *grid.arrays)
     box_pairs(boxes, np.ones(3, dtype=np.bool_))
+    by_entity(np.array([[1, 0]], dtype=np.int64), np.array([5, 3], dtype=np.int64))
     for meet in (True, False):
         body_pairs(state, np.zeros(1, dtype=np.int64), np.ones(1), 0.01, meet, meet, meet)

@@ -353,7 +353,7 @@ def pairs_apart(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.nda
     """The gap test for touching body pairs (shapes of a `ShapeTable` at rows `rows[q]` of a
     `body.BodyStore` state; gaps[g] the pair's smallest separation): `apart[g]` when the gap is
     wider than GAP_TOLERANCE and `pair_reaches` says the two would not close it this substep (a body
-    may be halted if it has something else near: another pair, or `near_walls[q]`), unless a push
+    may be halted if it has something else near: another pair, or a wall: q in `near_walls`), unless a push
     can reach it through a chain of pairs that do touch. `pressed[q]`: the body is in a pair that
     touches (or is pushed through such a chain)."""
     busy = np.zeros(len(rows), dtype=np.int64)
@@ -361,9 +361,8 @@ def pairs_apart(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.nda
         busy[pairs[g, 0]] += 1
         busy[pairs[g, 1]] += 1
     if len(pairs):
-        for q in range(len(rows)):
-            if near_walls[q]:
-                busy[q] += 1
+        for q in near_walls:
+            busy[q] += 1
     for g in range(len(pairs)):
         apart[g] = False
         if not gaps[g] > GAP_TOLERANCE:
@@ -416,7 +415,7 @@ def _warm() -> None:
                    np.full(2, 0.71), np.full(2, 1.0), True, 0.005, 0.005, 0.001, 0.005, np.ones(2), np.ones(1))
     pairs_apart(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
                 np.array([[0, 1]], dtype=np.int64), np.array([0.01]), state, np.array([0, 1], dtype=np.int64),
-                np.full(2, 0.71), np.zeros(2, dtype=np.bool_), 1.0 / 240.0, np.zeros(1, dtype=np.bool_),
+                np.full(2, 0.71), np.zeros(1, dtype=np.int64), 1.0 / 240.0, np.zeros(1, dtype=np.bool_),
                 np.zeros(2, dtype=np.bool_))
     reaches_wall(*args, 0.0, 0.0, 0.0, 2.0, 0.0, 0.5, 1.0 / 240.0, wall.verts, wall.normals, 0, 4)
     pair_reaches(*args, 0.7, start, end, *args, 0.7, still, end, 1.0 / 240.0, 0.01, True, True)

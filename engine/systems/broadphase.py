@@ -3,8 +3,10 @@ import numpy as np
 
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
-from polygolf.engine.physics.grid import bodies_near, body_pairs
+from polygolf.engine.physics.grid import bodies_near, body_pairs, by_entity
 from polygolf.engine.physics.settings import CONTACT_MARGIN
+
+_NO_PAIRS = np.zeros((0, 2), dtype=np.int64)
 
 
 class BroadphaseProcessor(esper.Processor):
@@ -27,10 +29,8 @@ class BroadphaseProcessor(esper.Processor):
                                          *self.statics.grid.arrays)
         candidates = self.candidates
         candidates.near, candidates.near_first, candidates.near_found = ents[near], first, found
-        pairs = np.zeros((0, 2), dtype=np.int64)
+        pairs = _NO_PAIRS
         if len(bodies) > 1:
-            found = ents[body_pairs(self.bodies.state, rows, self.shapes.radius, CONTACT_MARGIN, False,
-                                    self.config.collide_bodies, False)]
-            low, high = found.min(axis=1, initial=np.iinfo(np.int64).max), found.max(axis=1, initial=-1)
-            pairs = np.stack((low, high), axis=1)[np.lexsort((high, low))]
+            pairs = by_entity(body_pairs(self.bodies.state, rows, self.shapes.radius, CONTACT_MARGIN, False,
+                                         self.config.collide_bodies, False), ents)
         self.candidates.pair_ents = pairs  # in entity order, whichever way they were found

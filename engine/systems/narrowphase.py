@@ -5,7 +5,7 @@ import numpy as np
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.body import ANGLE, SPIN, X
-from polygolf.engine.physics.collide import ROW, bodies_pair_contacts, bodies_wall_contacts
+from polygolf.engine.physics.collide import ROW, bodies_pair_contacts, bodies_wall_contacts, kept_pairs
 from polygolf.engine.physics.contact import ContactTable, build_contacts, carry_impulses
 from polygolf.engine.physics.motion import wake_pairs
 from polygolf.engine.physics.settings import CONTACT_MARGIN, RESTITUTION_THRESHOLD
@@ -44,24 +44,18 @@ class NarrowphaseProcessor(esper.Processor):
         everyone = esper.get_components(Body, Collider)
         table, _ = self.shapes.of(everyone)
         store_rows = self.shapes.rows(self.bodies, everyone)
-        pair_rows, pair_first, pairs, gaps = _NO_PAIRS[0], _NO_PAIRS[1], _NO_PAIRS[2], np.zeros(0)
+        pairs = _NO_PAIRS[2]
+        pressed = np.zeros(len(store_rows), dtype=np.bool_)
         if len(self.candidates.pair_ents):
-            candidates = self.shapes.index(self.candidates.pair_ents)
-            pair_rows, pair_first, gaps = bodies_pair_contacts(
-                table.pieces.verts, table.pieces.normals, table.pieces.first, table.body_first, candidates,
-                state[store_rows, X:ANGLE + 1], self.shapes.radius, CONTACT_MARGIN)
-            touching = pair_first[1:] > pair_first[:-1]
-            pairs, gaps = candidates[touching], gaps[touching]
-            pair_rows = pair_rows[np.repeat(touching, pair_first[1:] - pair_first[:-1])]
-            pair_first = np.concatenate(([0], np.cumsum((pair_first[1:] - pair_first[:-1])[touching])))
-        ents = self.shapes.ents
-        apart, pressed = np.zeros(len(pairs), dtype=np.bool_), np.zeros(len(ents), dtype=np.bool_)
+            pair_rows, pair_first, pairs, gaps = bodies_pair_contacts(
+                table.pieces.verts, table.pieces.normals, table.pieces.first, table.body_first,
+                self.shapes.index(self.candidates.pair_ents), state[store_rows, X:ANGLE + 1], self.shapes.radius,
+                CONTACT_MARGIN)
         if len(pairs):
-            near_walls = np.zeros(len(ents), dtype=np.bool_)
-            near_walls[self.shapes.index(self.candidates.near)] = True
+            apart = np.empty(len(pairs), dtype=np.bool_)
             pairs_apart(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
-                        table.body_first, pairs, gaps, state, store_rows, self.shapes.radius, near_walls, dt, apart,
-                        pressed)
+                        table.body_first, pairs, gaps, state, store_rows, self.shapes.radius,
+                        self.shapes.index(self.candidates.near), dt, apart, pressed)
 
         # The contact rows against walls (body by body), then between bodies (pair by pair).
         walls = _NO_WALLS
@@ -77,15 +71,13 @@ class NarrowphaseProcessor(esper.Processor):
                 CONTACT_MARGIN)
             walls = (wall_rows, near_walls, near_rows, self.shapes.materials[rows_of_near])
         pair_groups = _NO_PAIRS
-        kept = ~apart  # as for walls: bodies that will not meet do not touch
-        if kept.any():
-            pairs, counts = pairs[kept], (pair_first[1:] - pair_first[:-1])[kept]
-            body_rows = store_rows[pairs]
-            wake_pairs(state, body_rows)
-            pair_groups = (pair_rows[np.repeat(kept, pair_first[1:] - pair_first[:-1])],
-                           np.concatenate(([0], np.cumsum(counts))).astype(np.int64), ents[pairs], body_rows,
-                           np.concatenate((self.shapes.materials[pairs[:, 0]], self.shapes.materials[pairs[:, 1]]),
-                                          axis=1))
+        if len(pairs):  # as for walls: bodies that will not meet do not touch
+            pair_groups = kept_pairs(pair_rows, pair_first, pairs, apart, self.shapes.ents, store_rows,
+                                     self.shapes.materials)
+            if len(pair_groups[2]):
+                wake_pairs(state, pair_groups[3])
+            else:
+                pair_groups = _NO_PAIRS
 
         if not len(walls[0]) and pair_groups is _NO_PAIRS:
             self.contacts.table = self._empty  # nothing touches: no kernel call (most substeps of a lone ball)

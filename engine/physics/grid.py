@@ -165,6 +165,25 @@ def bodies_near(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, margin:
 
 
 @kernel
+def _add_pair(pairs: np.ndarray, count: int, i: int, j: int) -> np.ndarray:
+    """(min, max) of i and j into row `count` of `pairs`, grown (doubled) if full; the array to use."""
+    if count == len(pairs):
+        grown = np.empty((2 * len(pairs), 2), dtype=np.int64)
+        grown[:count] = pairs[:count]
+        pairs = grown
+    pairs[count, 0], pairs[count, 1] = min(i, j), max(i, j)
+    return pairs
+
+
+@kernel
+def _sorted_pairs(pairs: np.ndarray, count: int, n: int) -> np.ndarray:
+    """The first `count` pairs of indices below n, sorted."""
+    out = pairs[:count].copy()
+    keys = out[:, 0] * (n + 1) + out[:, 1]
+    return out[np.argsort(keys, kind="mergesort")]
+
+
+@kernel
 def box_pairs(boxes: np.ndarray, active: np.ndarray) -> np.ndarray:
     """Every pair (i, j), i < j, of overlapping boxes of which at least one is `active`, sorted:
     a sweep along x."""
@@ -178,15 +197,9 @@ def box_pairs(boxes: np.ndarray, active: np.ndarray) -> np.ndarray:
             if boxes[j, 0] > boxes[i, 2]:
                 break
             if (active[i] or active[j]) and boxes[j, 1] <= boxes[i, 3] and boxes[i, 1] <= boxes[j, 3]:
-                if count == len(pairs):
-                    grown = np.empty((2 * len(pairs), 2), dtype=np.int64)
-                    grown[:count] = pairs[:count]
-                    pairs = grown
-                pairs[count, 0], pairs[count, 1] = min(i, j), max(i, j)
+                pairs = _add_pair(pairs, count, i, j)
                 count += 1
-    out = pairs[:count].copy()
-    keys = out[:, 0] * (len(boxes) + 1) + out[:, 1]
-    return out[np.argsort(keys, kind="mergesort")]
+    return _sorted_pairs(pairs, count, len(boxes))
 
 
 @kernel
@@ -223,15 +236,9 @@ def body_pairs(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, grow: fl
             continue
         for j in range(n):
             if moving[j] and overlaps(boxes[i], boxes[j]):
-                if count == len(pairs):
-                    grown = np.empty((2 * len(pairs), 2), dtype=np.int64)
-                    grown[:count] = pairs[:count]
-                    pairs = grown
-                pairs[count, 0], pairs[count, 1] = min(i, j), max(i, j)
+                pairs = _add_pair(pairs, count, i, j)
                 count += 1
-    out = pairs[:count].copy()
-    keys = out[:, 0] * (n + 1) + out[:, 1]
-    return out[np.argsort(keys, kind="mergesort")]
+    return _sorted_pairs(pairs, count, n)
 
 
 @kernel

@@ -1,5 +1,4 @@
 import esper
-import numpy as np
 
 from polygolf.engine.components import Ball, Body, Region, Slope
 from polygolf.engine.components.resources import Resources
@@ -16,7 +15,7 @@ class SlopeProcessor(esper.Processor):
 
     def __init__(self, res: Resources) -> None:
         self.config, self.bodies = res.config, res.bodies
-        self._balls, self._slopes = Selection(), AreaIndex()
+        self._balls, self._slopes = Selection(), AreaIndex(lambda slope: slope.push)
 
     def process(self) -> None:
         state = self.bodies.gather(esper.get_component(Body))
@@ -25,5 +24,5 @@ class SlopeProcessor(esper.Processor):
         on = self._slopes.under(state, rows, zones)
         if on is not None:
             pushed = on >= 0
-            push = np.array([slope.push for _, (_, slope) in zones], dtype=np.float64)[on[pushed]]
+            push = self._slopes.values[on[pushed]]
             accelerate(state, rows[pushed], push[:, 0].copy(), push[:, 1].copy(), self.config.dt)

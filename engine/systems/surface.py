@@ -1,5 +1,4 @@
 import esper
-import numpy as np
 
 from polygolf.engine.components import Ball, Body, Drag, Region
 from polygolf.engine.components.resources import Resources
@@ -16,7 +15,7 @@ class SurfaceProcessor(esper.Processor):
 
     def __init__(self, res: Resources) -> None:
         self.bodies = res.bodies
-        self._balls, self._areas = Selection(), AreaIndex()
+        self._balls, self._areas = Selection(), AreaIndex(lambda surface: surface.drag_scale)
 
     def process(self) -> None:
         state = self.bodies.gather(esper.get_component(Body))
@@ -25,5 +24,4 @@ class SurfaceProcessor(esper.Processor):
         on = self._areas.under(state, rows, zones)
         if on is not None:
             found = on >= 0
-            scales = np.array([surface.drag_scale for _, (_, surface) in zones], dtype=np.float64)
-            state[rows[found], DRAG_SCALE] = scales[on[found]]
+            state[rows[found], DRAG_SCALE] = self._areas.values[on[found]]

@@ -109,6 +109,17 @@ def overlapping(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny
 
 
 @kernel
+def _append(found: np.ndarray, total: int, items: np.ndarray, n: int) -> np.ndarray:
+    """items[:n] after the first `total` of `found`, grown (doubled) as needed; the array to use."""
+    while total + n > len(found):
+        grown = np.empty(2 * len(found), dtype=np.int64)
+        grown[:total] = found[:total]
+        found = grown
+    found[total:total + n] = items[:n]
+    return found
+
+
+@kernel
 def _query_many(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int, cell_first: np.ndarray,
                 cell_items: np.ndarray, large: np.ndarray, queries: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """For every query box, the boxes it overlaps: (first, items) in compressed rows."""
@@ -119,11 +130,7 @@ def _query_many(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny
     total = 0
     for q in range(len(queries)):
         n = overlapping(boxes, x0, y0, inv, nx, ny, cell_first, cell_items, large, queries[q], seen, scratch)
-        while total + n > len(found):
-            grown = np.empty(2 * len(found), dtype=np.int64)
-            grown[:total] = found[:total]
-            found = grown
-        found[total:total + n] = scratch[:n]
+        found = _append(found, total, scratch, n)
         total += n
         first[q + 1] = total
     return first, found[:total].copy()
@@ -152,11 +159,7 @@ def bodies_near(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, margin:
         n = overlapping(boxes, x0, y0, inv, nx, ny, cell_first, cell_items, large, box, seen, scratch)
         if n == 0:
             continue
-        while total + n > len(found):
-            grown = np.empty(2 * len(found), dtype=np.int64)
-            grown[:total] = found[:total]
-            found = grown
-        found[total:total + n] = scratch[:n]
+        found = _append(found, total, scratch, n)
         total += n
         near[bodies] = q
         bodies += 1

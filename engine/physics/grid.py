@@ -139,17 +139,18 @@ def _query_many(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny
 @kernel
 def bodies_near(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, margin: float, boxes: np.ndarray, x0: float,
                 y0: float, inv: float, nx: int, ny: int, cell_first: np.ndarray, cell_items: np.ndarray,
-                large: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+                large: np.ndarray, seen: np.ndarray, scratch: np.ndarray, near: np.ndarray, first: np.ndarray,
+                found: np.ndarray) -> tuple[np.ndarray, int]:
     """For the awake dynamic bodies among `rows` of a `body.BodyStore` state (bounding radii
-    `radius`, grown by `margin`), the grid's boxes each one's box overlaps: (near, first, found),
-    `near` the bodies (indices into `rows`) that have any, their boxes in compressed rows."""
-    seen = np.zeros(len(boxes), dtype=np.bool_)
-    scratch = np.empty(len(boxes), dtype=np.int64)
-    near = np.empty(len(rows), dtype=np.int64)
-    first = np.zeros(len(rows) + 1, dtype=np.int64)
-    found = np.empty(16, dtype=np.int64)
+    `radius`, grown by `margin`), the grid's boxes each one's box overlaps, into the caller's
+    arrays (kept from substep to substep: nothing is allocated unless `found` must grow): the
+    bodies that have any (indices into `rows`) into `near`, their boxes in compressed rows
+    (`first`, `found`). `seen` and `scratch`: the grid query's, one row per box; `near` and
+    `first` need len(rows) and len(rows) + 1 rows. Returns `found` (grown if it had to) and how
+    many bodies have boxes near."""
     box = np.empty(4)
     bodies, total = 0, 0
+    first[0] = 0
     for q in range(len(rows)):
         k = rows[q]
         if state[k, ASLEEP] != 0.0 or state[k, INV_MASS] == 0.0:
@@ -164,7 +165,7 @@ def bodies_near(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, margin:
         near[bodies] = q
         bodies += 1
         first[bodies] = total
-    return near[:bodies].copy(), first[:bodies + 1].copy(), found[:total].copy()
+    return found, bodies
 
 
 @kernel
@@ -305,7 +306,9 @@ def _warm() -> None:
     grid.query_many(boxes)
     state = np.zeros((1, len(COLUMNS)))
     state[0, INV_MASS] = 1.0
-    bodies_near(state, np.zeros(1, dtype=np.int64), np.ones(1), 0.01, *grid.arrays)
+    bodies_near(state, np.zeros(1, dtype=np.int64), np.ones(1), 0.01, *grid.arrays, np.zeros(3, dtype=np.bool_),
+                np.empty(3, dtype=np.int64), np.empty(1, dtype=np.int64), np.empty(2, dtype=np.int64),
+                np.empty(1, dtype=np.int64))
     box_pairs(boxes, np.ones(3, dtype=np.bool_))
     by_entity(np.array([[1, 0]], dtype=np.int64), np.array([5, 3], dtype=np.int64))
     for meet in (True, False):

@@ -19,16 +19,25 @@ class BroadphaseProcessor(esper.Processor):
     def __init__(self, res: Resources) -> None:
         self.statics, self.candidates, self.config = res.statics, res.candidates, res.config
         self.shapes, self.bodies = res.shapes, res.bodies
+        walls = len(res.statics.grid)  # the grid query's scratch, and the answer's arrays, kept between substeps
+        self._seen, self._scratch = np.zeros(walls, dtype=np.bool_), np.empty(walls, dtype=np.int64)
+        self._near, self._first = np.empty(0, dtype=np.int64), np.empty(1, dtype=np.int64)
+        self._found = np.empty(16, dtype=np.int64)
 
     def process(self) -> None:
         self.bodies.gather(esper.get_component(Body))
         bodies = esper.get_components(Body, Collider)
         rows = self.shapes.rows(self.bodies, bodies)
         ents = self.shapes.ents
-        near, first, found = bodies_near(self.bodies.state, rows, self.shapes.radius, CONTACT_MARGIN,
-                                         *self.statics.grid.arrays)
+        if len(self._near) != len(rows):
+            self._near, self._first = np.empty(len(rows), dtype=np.int64), np.empty(len(rows) + 1, dtype=np.int64)
+        self._found, count = bodies_near(self.bodies.state, rows, self.shapes.radius, CONTACT_MARGIN,
+                                         *self.statics.grid.arrays, self._seen, self._scratch, self._near, self._first,
+                                         self._found)
         candidates = self.candidates
-        candidates.near, candidates.near_first, candidates.near_found = ents[near], first, found
+        candidates.near = ents[self._near[:count]]
+        candidates.near_first = self._first[:count + 1].copy()
+        candidates.near_found = self._found[:self._first[count]].copy()
         pairs = _NO_PAIRS
         if len(bodies) > 1:
             pairs = by_entity(body_pairs(self.bodies.state, rows, self.shapes.radius, CONTACT_MARGIN, False,

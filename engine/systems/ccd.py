@@ -32,6 +32,7 @@ class CCDProcessor(esper.Processor):
         walls = len(res.statics.grid)
         self._seen, self._found = np.zeros(walls, dtype=np.bool_), np.empty(walls, dtype=np.int64)
         self.shapes, self.bodies = res.shapes, res.bodies
+        self._hits = np.empty(0)  # each body's time of impact this substep, kept between substeps
 
     def process(self) -> None:
         bodies = esper.get_components(Body, Collider)
@@ -39,10 +40,13 @@ class CCDProcessor(esper.Processor):
         state = self.bodies.gather(esper.get_component(Body))
         rows = self.shapes.rows(self.bodies, bodies)
         walls = self.statics.pieces
-        hits, longest, count = first_wall_hits(
+        if len(self._hits) != len(rows):
+            self._hits = np.empty(len(rows))
+        hits = self._hits
+        longest, count = first_wall_hits(
             table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
             state, rows, self.shapes.radius, LINEAR_SLOP, self.statics.grid.arrays, self._seen, self._found,
-            walls.verts, walls.normals, walls.first, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP)
+            walls.verts, walls.normals, walls.first, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP, hits)
         # No pair can need sweeping while no body steps half the linear slop.
         if len(bodies) > 1 and longest >= 0.5 * LINEAR_SLOP:
             count += self._body_hits(table, rows, hits)

@@ -39,6 +39,18 @@ def test_queries_and_pairs_match_brute_force(items, queries, cell, active):
     assert [tuple(p) for p in box_pairs(np.array(items), active).tolist()] == expected
 
 
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.builds(lambda x, y, w, h: (x, y, x + w, y + h), st.floats(-20, 20), st.floats(-20, 20),
+                          st.floats(0.0, 3.0), st.floats(0.0, 3.0)), min_size=40, max_size=160),
+       st.lists(st.booleans(), min_size=160, max_size=160))
+def test_pairs_of_a_crowd_match_brute_force(items, active):
+    """A crowd is paired through a grid of cells as large as its largest box, not by the sweep."""
+    active = np.array(active[:len(items)])
+    expected = sorted((i, j) for i in range(len(items)) for j in range(i + 1, len(items))
+                      if _overlaps(items[i], items[j]) and (active[i] or active[j]))
+    assert [tuple(p) for p in box_pairs(np.array(items), active).tolist()] == expected
+
+
 def test_boxes_beyond_the_grid_and_not_numbers_are_answered_too():
     grid = BoxGrid(np.array([[0.0, 0.0, 1.0, 1.0], [5.0, 5.0, 6.0, 6.0]]), 1.0)
     assert grid.query((-math.inf, -math.inf, math.inf, math.inf)).tolist() == [0, 1]

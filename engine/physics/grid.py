@@ -12,6 +12,8 @@ Boxes are rows (min x, min y, max x, max y) of a float64 array; answers are row 
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from polygolf.engine.physics.body import ASLEEP, COLUMNS, INV_MASS, SPIN, VX, VY, X0, Y0, X, Y
@@ -188,9 +190,8 @@ def _sorted_pairs(pairs: np.ndarray, count: int, n: int) -> np.ndarray:
 
 
 @kernel
-def box_pairs(boxes: np.ndarray, active: np.ndarray) -> np.ndarray:
-    """Every pair (i, j), i < j, of overlapping boxes of which at least one is `active`, sorted:
-    a sweep along x."""
+def _swept_pairs(boxes: np.ndarray, active: np.ndarray) -> np.ndarray:
+    """`box_pairs` by a sweep along x (few boxes, or some not finite)."""
     order = np.argsort(boxes[:, 0], kind="mergesort")
     pairs = np.empty((16, 2), dtype=np.int64)
     count = 0
@@ -204,6 +205,56 @@ def box_pairs(boxes: np.ndarray, active: np.ndarray) -> np.ndarray:
                 pairs = _add_pair(pairs, count, i, j)
                 count += 1
     return _sorted_pairs(pairs, count, len(boxes))
+
+
+@kernel
+def _hashed_pairs(boxes: np.ndarray, active: np.ndarray, cell: float) -> np.ndarray:
+    """`box_pairs` through a uniform grid of `cell`-sized cells, none smaller than a box: each box
+    is filed under the (at most four) cells it touches, and a pair is taken in the one cell that
+    holds the lower-left corner of the two boxes' overlap, so once."""
+    x0, y0 = boxes[:, 0].min(), boxes[:, 1].min()
+    width, height = boxes[:, 2].max() - x0, boxes[:, 3].max() - y0
+    while (width / cell + 1.0) * (height / cell + 1.0) > MAX_GRID:
+        cell *= 2.0
+    inv = 1.0 / cell
+    nx, ny = int(width * inv) + 1, int(height * inv) + 1
+    cell_first, cell_items, large = _file(boxes, x0, y0, inv, nx, ny)
+    if len(large):  # cannot happen (no box is larger than a cell); were it to, the sweep still answers
+        return _swept_pairs(boxes, active)
+    pairs = np.empty((16, 2), dtype=np.int64)
+    count = 0
+    for c in range(nx * ny):
+        for a in range(cell_first[c], cell_first[c + 1]):
+            i = cell_items[a]
+            for b in range(a + 1, cell_first[c + 1]):
+                j = cell_items[b]
+                if not (active[i] or active[j]) or not overlaps(boxes[i], boxes[j]):
+                    continue
+                corner_x, corner_y = max(boxes[i, 0], boxes[j, 0]), max(boxes[i, 1], boxes[j, 1])
+                if _cell(corner_y, y0, inv, ny) * nx + _cell(corner_x, x0, inv, nx) == c:
+                    pairs = _add_pair(pairs, count, i, j)
+                    count += 1
+    return _sorted_pairs(pairs, count, len(boxes))
+
+
+SWEEP_BELOW = 48  # fewer boxes than this: the sweep is as quick as filing them in a grid
+
+
+@kernel
+def box_pairs(boxes: np.ndarray, active: np.ndarray) -> np.ndarray:
+    """Every pair (i, j), i < j, of overlapping boxes of which at least one is `active`, sorted.
+    A crowd is filed in a grid of cells as large as its largest box (a sweep along x meets every
+    box of a column); a few boxes, or boxes not all finite, are swept along x."""
+    cell = 0.0
+    for i in range(len(boxes)):
+        w, h = boxes[i, 2] - boxes[i, 0], boxes[i, 3] - boxes[i, 1]
+        if not (math.isfinite(w) and math.isfinite(h) and math.isfinite(boxes[i, 0])
+                and math.isfinite(boxes[i, 1])):
+            return _swept_pairs(boxes, active)
+        cell = max(cell, w, h)
+    if len(boxes) < SWEEP_BELOW or not cell > 0.0:
+        return _swept_pairs(boxes, active)
+    return _hashed_pairs(boxes, active, cell)
 
 
 @kernel

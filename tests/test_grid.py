@@ -11,7 +11,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from polygolf.engine.loading.scene import Scene, build_scene
-from polygolf.engine.physics.grid import BoxGrid, box_pairs
+from polygolf.engine.physics.body import ASLEEP, COLUMNS, INV_MASS, X, Y
+from polygolf.engine.physics.grid import BoxGrid, bodies_near, box_pairs
 
 coord = st.floats(-3000, 3000, allow_nan=False)
 size = st.floats(0.01, 2000, allow_nan=False)
@@ -30,9 +31,24 @@ def test_queries_and_pairs_match_brute_force(items, queries, cell, active):
     for query in queries:
         found = grid.query(query).tolist()
         assert found == sorted(i for i, box in enumerate(items) if _overlaps(query, box))
-    first, found = grid.query_many(np.array(queries))
-    assert [found[first[q]:first[q + 1]].tolist() for q in range(len(queries))] == [
-        grid.query(query).tolist() for query in queries]
+    # The bodies' lookup (`bodies_near`): a body at each query's centre, half its width wide, the
+    # second at rest (not looked up).
+    state = np.zeros((len(queries), len(COLUMNS)))
+    state[:, INV_MASS] = 1.0
+    state[1:2, ASLEEP] = 1.0
+    state[:, X] = [(q[0] + q[2]) / 2 for q in queries]
+    state[:, Y] = [(q[1] + q[3]) / 2 for q in queries]
+    radius = np.array([(q[2] - q[0]) / 2 for q in queries])
+    near, first = np.empty(len(queries), dtype=np.int64), np.empty(len(queries) + 1, dtype=np.int64)
+    found, count = bodies_near(state, np.arange(len(queries), dtype=np.int64), radius, 0.0, *grid.arrays,
+                               np.zeros(len(items), dtype=np.bool_), np.empty(len(items), dtype=np.int64), near,
+                               first, np.empty(1, dtype=np.int64))
+    answers = {near[k]: found[first[k]:first[k + 1]].tolist() for k in range(count)}
+    for q in range(len(queries)):
+        x, y, r = state[q, X], state[q, Y], radius[q]
+        square = (x - r, y - r, x + r, y + r)
+        expected = [] if q == 1 else [i for i, box in enumerate(items) if _overlaps(square, box)]
+        assert answers.get(q, []) == expected
     active = np.array(active[:len(items)])
     expected = sorted((i, j) for i in range(len(items)) for j in range(i + 1, len(items))
                       if _overlaps(items[i], items[j]) and (active[i] or active[j]))

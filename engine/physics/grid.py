@@ -122,23 +122,6 @@ def _append(found: np.ndarray, total: int, items: np.ndarray, n: int) -> np.ndar
 
 
 @kernel
-def _query_many(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int, cell_first: np.ndarray,
-                cell_items: np.ndarray, large: np.ndarray, queries: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """For every query box, the boxes it overlaps: (first, items) in compressed rows."""
-    seen = np.zeros(len(boxes), dtype=np.bool_)
-    scratch = np.empty(len(boxes), dtype=np.int64)
-    first = np.zeros(len(queries) + 1, dtype=np.int64)
-    found = np.empty(16, dtype=np.int64)
-    total = 0
-    for q in range(len(queries)):
-        n = overlapping(boxes, x0, y0, inv, nx, ny, cell_first, cell_items, large, queries[q], seen, scratch)
-        found = _append(found, total, scratch, n)
-        total += n
-        first[q + 1] = total
-    return first, found[:total].copy()
-
-
-@kernel
 def bodies_near(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, margin: float, boxes: np.ndarray, x0: float,
                 y0: float, inv: float, nx: int, ny: int, cell_first: np.ndarray, cell_items: np.ndarray,
                 large: np.ndarray, seen: np.ndarray, scratch: np.ndarray, near: np.ndarray, first: np.ndarray,
@@ -343,18 +326,12 @@ class BoxGrid:
         count = overlapping(*self.arrays, np.asarray(box, dtype=np.float64), self._seen, self._out)
         return self._out[:count].copy()
 
-    def query_many(self, queries: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """The boxes each query box ((n, 4) float64) overlaps, as compressed rows: query q's are
-        items[first[q]:first[q+1]]."""
-        return _query_many(*self.arrays, queries)
-
 
 @warm_up("grid")
 def _warm() -> None:
     boxes = np.array([[0.0, 0.0, 1.0, 1.0], [0.5, 0.5, 2.0, 2.0], [-500.0, -500.0, 500.0, -400.0]])
     grid = BoxGrid(boxes, 1.0)
     grid.query((0.2, 0.2, 0.6, 0.6))
-    grid.query_many(boxes)
     state = np.zeros((1, len(COLUMNS)))
     state[0, INV_MASS] = 1.0
     bodies_near(state, np.zeros(1, dtype=np.int64), np.ones(1), 0.01, *grid.arrays, np.zeros(3, dtype=np.bool_),

@@ -12,6 +12,7 @@ from polygolf.engine.physics.settings import CONTACT_MARGIN, RESTITUTION_THRESHO
 from polygolf.engine.physics.toi import pairs_apart
 
 _NO_WALLS = (np.zeros((0, ROW)), np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64), np.zeros((0, 2)))
+_NOT_TOUCHING = np.zeros((0, 2), dtype=np.int64)  # body pairs (table rows) that touch
 _NO_PAIRS = (np.zeros((0, ROW)), np.zeros(1, dtype=np.int64), np.zeros((0, 2), dtype=np.int64),
              np.zeros((0, 2), dtype=np.int64), np.zeros((0, 4)))
 
@@ -44,7 +45,7 @@ class NarrowphaseProcessor(esper.Processor):
         everyone = esper.get_components(Body, Collider)
         table, _ = self.shapes.of(everyone)
         store_rows = self.shapes.rows(self.bodies, everyone)
-        pairs = _NO_PAIRS[2]
+        pairs = _NOT_TOUCHING
         pressed = np.zeros(len(store_rows), dtype=np.bool_)
         if len(self.candidates.pair_ents):
             pair_rows, pair_first, pairs, gaps = bodies_pair_contacts(

@@ -8,7 +8,7 @@ import pytest
 from polygolf.engine.physics import polygon
 from polygolf.engine.physics.collide import collide_polygons, separation
 from polygolf.engine.physics.geometry import ConvexSet
-from polygolf.engine.physics.toi import time_of_impact
+from polygolf.engine.physics.toi import time_of_impact, toi_work
 
 
 def at(verts, dx=0.0, dy=0.0):
@@ -62,7 +62,7 @@ def test_time_of_impact_head_on_and_miss():
 
     def toi(start, end):
         return time_of_impact(piece.verts, piece.normals, 0, 4, reach, np.array(start), np.array(end), walls.verts,
-                              walls.normals, 0, 4, 0.005, 0.001, 0.005)
+                              walls.normals, 0, 4, 0.005, 0.001, 0.005, toi_work(4))
 
     t = toi((2.0, 0.0, 0.0), (-2.0, 0.0, 0.0))
     assert 2.0 - 4.0 * t - 0.1 == pytest.approx(0.03, abs=0.0011)

@@ -22,7 +22,7 @@ from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
 from polygolf.engine.physics.jit import kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
 from polygolf.engine.physics.settings import GAP_TOLERANCE
-from polygolf.engine.physics.toi import reaches_wall
+from polygolf.engine.physics.toi import reaches_wall, toi_work, widest
 
 # Prefer polygon A's face unless B's is clearly better: stops the reference face flickering between
 # the two polygons when they are nearly parallel, which would spoil warm starting.
@@ -211,12 +211,13 @@ def collide_sets(va: np.ndarray, na: np.ndarray, fa: np.ndarray, vb: np.ndarray,
 def wall_contacts(va: np.ndarray, na: np.ndarray, shape_verts: np.ndarray, shape_normals: np.ndarray,
                   fa: np.ndarray, reach: np.ndarray, x: float, y: float, angle: float, vx: float, vy: float,
                   spin: float, dt: float, pressed: bool, walls: tuple, pieces: np.ndarray,
-                  margin: float, out: np.ndarray) -> int:
+                  margin: float, out: np.ndarray, work: tuple) -> int:
     """A body's contacts with the wall pieces listed (`collide_sets`, wall piece by wall piece),
     keeping those of a piece only if the body touches it (within GAP_TOLERANCE), or is `pressed` by
     another body, or would close the gap moving on as it is for dt (`toi.reaches_wall`): a ball
     passing a corner it never touches is never hit. `va`, `na`: the body's pieces posed at (x, y,
-    angle); `shape_*`: the same in its own frame. Returns the rows kept, at the top of `out`."""
+    angle); `shape_*`: the same in its own frame. Returns the rows kept, at the top of `out`.
+    `work`: the time of impact's scratch (`toi.toi_work`)."""
     wv, wn, wf, internal, hidden = walls
     rows = collide_sets(va, na, fa, wv, wn, wf, pieces, internal, hidden, True, margin, True, out)
     kept = 0
@@ -230,7 +231,7 @@ def wall_contacts(va: np.ndarray, na: np.ndarray, shape_verts: np.ndarray, shape
             end += 1
         g = int(piece)
         if pressed or lowest <= GAP_TOLERANCE or reaches_wall(shape_verts, shape_normals, fa, reach, x, y, angle,
-                                                              vx, vy, spin, dt, wv, wn, wf[g], wf[g + 1]):
+                                                              vx, vy, spin, dt, wv, wn, wf[g], wf[g + 1], work):
             for r in range(k, end):
                 out[kept] = out[r]
                 kept += 1
@@ -253,17 +254,16 @@ def bodies_wall_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reac
         rows += 2 * pieces * (near_first[q + 1] - near_first[q])
     out = np.empty((rows, ROW))
     kept = 0
+    # Each body is posed into its own rows of one table-sized array: nothing is allocated a body.
+    verts, normals = np.empty((len(lv), 2)), np.empty((len(lv), 2))
+    work = toi_work(max(widest(first), widest(walls[2])))
     for q in range(len(which)):
         p0, p1 = body_first[which[q]], body_first[which[q] + 1]
         v0, v1 = first[p0], first[p1]
-        local_first = first[p0:p1 + 1] - v0
-        shape_verts, shape_normals = lv[v0:v1], ln[v0:v1]
         x, y, angle, vx, vy, spin = states[q]
-        verts, normals = np.empty((v1 - v0, 2)), np.empty((v1 - v0, 2))
-        pose_piece(lv, ln, v0, v1, x, y, angle, verts, normals)
-        made = wall_contacts(verts, normals, shape_verts, shape_normals, local_first, reach[p0:p1], x, y, angle, vx,
-                             vy, spin, dt, pressed[q], walls, near[near_first[q]:near_first[q + 1]], margin,
-                             out[kept:])
+        pose_piece(lv, ln, v0, v1, x, y, angle, verts[v0:v1], normals[v0:v1])
+        made = wall_contacts(verts, normals, lv, ln, first[p0:p1 + 1], reach[p0:p1], x, y, angle, vx, vy, spin, dt,
+                             pressed[q], walls, near[near_first[q]:near_first[q + 1]], margin, out[kept:], work)
         for k in range(kept, kept + made):
             out[k, BODY] = q
         kept += made
@@ -413,7 +413,7 @@ def _warm() -> None:
     walls = (_rows(lifted), na, first, np.zeros(4, dtype=np.bool_), np.zeros(4, dtype=np.bool_))
     for pressed in (False, True):
         wall_contacts(va, na, va, na, first, np.array([0.71]), 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0 / 240.0, pressed,
-                      walls, np.zeros(1, dtype=np.int64), 0.01, np.empty((2, ROW)))
+                      walls, np.zeros(1, dtype=np.int64), 0.01, np.empty((2, ROW)), toi_work(4))
     collide_sets(va, na, first, _rows(lifted), na, first, np.zeros(1, dtype=np.int64), NO_SEAMS, NO_SEAMS, False,
                  0.01, False, np.empty((2, ROW)))
     table = ShapeTable.of([ConvexSet.of([square], [normals])])

@@ -24,8 +24,16 @@ MAX_GRID = 1 << 20  # cells in a grid; a coarser cell is taken beyond it
 
 
 @kernel
-def overlaps(a: np.ndarray, b: np.ndarray) -> bool:
-    return a[0] <= b[2] and b[0] <= a[2] and a[1] <= b[3] and b[1] <= a[3]
+def overlaps(box: np.ndarray, boxes: np.ndarray, i: int) -> bool:
+    """Whether `box` and row i of `boxes` overlap (a row by index: taking it as a view of its own
+    costs more than the test)."""
+    return box[0] <= boxes[i, 2] and boxes[i, 0] <= box[2] and box[1] <= boxes[i, 3] and boxes[i, 1] <= box[3]
+
+
+@kernel
+def rows_overlap(boxes: np.ndarray, i: int, j: int) -> bool:
+    return boxes[i, 0] <= boxes[j, 2] and boxes[j, 0] <= boxes[i, 2] and boxes[i, 1] <= boxes[j, 3] \
+        and boxes[j, 1] <= boxes[i, 3]
 
 
 @kernel
@@ -87,27 +95,45 @@ def overlapping(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny
     cx0, cy0, cx1, cy1 = _cell_range(box, x0, y0, inv, nx, ny)
     if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > len(boxes):  # wider than there are boxes: each box once
         for i in range(len(boxes)):
-            if overlaps(box, boxes[i]):
+            if overlaps(box, boxes, i):
                 out[count] = i
                 count += 1
         return count
+    several = cx1 > cx0 or cy1 > cy0  # a box filed under several of these cells could come up twice
     for cy in range(cy0, cy1 + 1):
         for cx in range(cx0, cx1 + 1):
             cell = cy * nx + cx
             for k in range(cell_first[cell], cell_first[cell + 1]):
                 i = cell_items[k]
-                if not seen[i] and overlaps(box, boxes[i]):
-                    seen[i] = True
+                if not seen[i] and overlaps(box, boxes, i):
+                    seen[i] = several
                     out[count] = i
                     count += 1
     for i in large:
-        if overlaps(box, boxes[i]):
+        if overlaps(box, boxes, i):
             out[count] = i
             count += 1
-    for k in range(count):
-        seen[out[k]] = False
-    out[:count].sort()
+    if several:
+        for k in range(count):
+            seen[out[k]] = False
+    _sort_few(out, count)
     return count
+
+
+@kernel
+def _sort_few(values: np.ndarray, count: int) -> None:
+    """values[:count] in ascending order: by insertion while they are few (a query's usual answer,
+    mostly in order already), else by the library's sort."""
+    if count > 16:
+        values[:count].sort()
+        return
+    for a in range(1, count):
+        v = values[a]
+        b = a - 1
+        while b >= 0 and values[b] > v:
+            values[b + 1] = values[b]
+            b -= 1
+        values[b + 1] = v
 
 
 @kernel
@@ -211,7 +237,7 @@ def _hashed_pairs(boxes: np.ndarray, active: np.ndarray, cell: float) -> np.ndar
             i = cell_items[a]
             for b in range(a + 1, cell_first[c + 1]):
                 j = cell_items[b]
-                if not (active[i] or active[j]) or not overlaps(boxes[i], boxes[j]):
+                if not (active[i] or active[j]) or not rows_overlap(boxes, i, j):
                     continue
                 corner_x, corner_y = max(boxes[i, 0], boxes[j, 0]), max(boxes[i, 1], boxes[j, 1])
                 if _cell(corner_y, y0, inv, ny) * nx + _cell(corner_x, x0, inv, nx) == c:
@@ -273,7 +299,7 @@ def body_pairs(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, grow: fl
         if state[rows[i], INV_MASS] != 0.0:
             continue
         for j in range(n):
-            if moving[j] and overlaps(boxes[i], boxes[j]):
+            if moving[j] and rows_overlap(boxes, i, j):
                 pairs = _add_pair(pairs, count, i, j)
                 count += 1
     return _sorted_pairs(pairs, count, n)

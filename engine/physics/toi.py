@@ -75,16 +75,15 @@ def _separations(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, xa: float, 
 def _advance(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, start_a: np.ndarray, end_a: np.ndarray,
              lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, start_b: np.ndarray, end_b: np.ndarray,
              b_posed: bool, rates: np.ndarray, target: float, tolerance: float, allowance: float,
-             at_start: np.ndarray) -> float:
+             at_start: np.ndarray, measured: bool, work: tuple) -> float:
     """Conservative advancement over t in [0, 1]: the first t at which the separating-axis distance
     comes within `target` (see time_of_impact for `allowance`), or NO_HIT. Axes: B's faces first
-    when B is a wall, else A's. `at_start`: the separations at t = 0 if already measured (else
-    empty)."""
+    when B is a wall, else A's. `at_start`: the separations at t = 0 if already `measured`.
+    `work`: scratch (`toi_work`)."""
     na_, nb_ = ea - sa, eb - sb
-    pa_v, pa_n = np.empty((na_, 2)), np.empty((na_, 2))
-    pb_v, pb_n = np.empty((nb_, 2)), np.empty((nb_, 2))
-    seps = np.empty(na_ + nb_)
-    if len(at_start):
+    posed, seps = work[0], work[1]
+    pa_v, pa_n, pb_v, pb_n = posed[0], posed[1], posed[2], posed[3]
+    if measured:
         worst = -1e300
         for k in range(na_ + nb_):
             seps[k] = at_start[k]
@@ -121,20 +120,38 @@ def _advance(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, start_a: np.nda
 
 
 _NOWHERE = np.zeros(3)
-_NOTHING = np.zeros(0)
+
+
+@kernel
+def toi_work(vertices: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Scratch for the time of impact of pieces of at most `vertices` vertices, made once a kernel
+    call rather than once a pair of pieces: both pieces posed (vertices and normals), a row per
+    face for the separations, their rates and the separations at the start, and four motions
+    (x, y, angle)."""
+    return (np.empty((4, vertices, 2)), np.empty(2 * vertices), np.empty(2 * vertices), np.empty(2 * vertices),
+            np.empty((4, 3)))
+
+
+@kernel
+def widest(first: np.ndarray) -> int:
+    """The most vertices of any piece of a set (rows `first`)."""
+    most = 0
+    for i in range(len(first) - 1):
+        most = max(most, first[i + 1] - first[i])
+    return most
 
 
 @kernel
 def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float, start: np.ndarray,
                    end: np.ndarray, wv: np.ndarray, wn: np.ndarray, ws: int, we: int, target: float, tolerance: float,
-                   allowance: float) -> float:
+                   allowance: float, work: tuple) -> float:
     """Fraction of the motion start -> end (x, y, angle) at which the piece (rows s..e, body frame)
     first comes within `target` of the wall piece (rows ws..we, world), or NO_HIT.
 
     `reach` is the largest distance of the piece's vertices from the body origin. A piece already
     touching at the start (sliding along the wall, say) is stopped only if it would sink `allowance`
     deeper than it already is: a corner swinging into the wall while another rests on it is caught,
-    but sliding is not interrupted."""
+    but sliding is not interrupted. `work`: scratch (`toi_work`)."""
     dx, dy, da = end[0] - start[0], end[1] - start[1], end[2] - start[2]
     turn = abs(da) * reach  # largest distance any vertex moves by rotation over the whole motion
     general_rate = math.hypot(dx, dy) + turn
@@ -142,30 +159,31 @@ def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float,
         return NO_HIT
     # Per unit of t, wall face k can approach no faster than this; the piece's own faces turn with
     # it, so only the general bound holds for them.
-    rates = np.empty(we - ws + e - s)
+    rates = work[2]
     for k in range(we - ws):
         rates[k] = max(0.0, -(dx * wn[ws + k, 0] + dy * wn[ws + k, 1])) + turn
     for k in range(we - ws, we - ws + e - s):
         rates[k] = general_rate
     return _advance(lv, ln, s, e, start, end, wv, wn, ws, we, _NOWHERE, _NOWHERE, True, rates, target, tolerance,
-                    allowance, _NOTHING)
+                    allowance, rates, False, work)
 
 
 @kernel
 def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reach_a: float, start_a: np.ndarray,
                         end_a: np.ndarray, lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, reach_b: float,
                         start_b: np.ndarray, end_b: np.ndarray, target: float, tolerance: float, allowance: float,
-                        at_start: np.ndarray) -> float:
+                        at_start: np.ndarray, measured: bool, work: tuple) -> float:
     """The same for two pieces that both move (two bodies): every axis turns with its body, so every
     axis takes the bound on their relative motion, |dA - dB| + |ΔθA|·RA + |ΔθB|·RB. `at_start`: the
-    separations at the start poses, if already measured (else empty)."""
+    separations at the start poses, if already `measured`."""
     rate = (math.hypot(end_a[0] - start_a[0] - end_b[0] + start_b[0], end_a[1] - start_a[1] - end_b[1] + start_b[1])
             + abs(end_a[2] - start_a[2]) * reach_a + abs(end_b[2] - start_b[2]) * reach_b)
     if rate <= 0.0:
         return NO_HIT
-    rates = np.full(ea - sa + eb - sb, rate)
+    rates = work[2]
+    rates[:ea - sa + eb - sb] = rate
     return _advance(lva, lna, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b, end_b, False, rates, target,
-                    tolerance, allowance, at_start)
+                    tolerance, allowance, at_start, measured, work)
 
 
 @kernel
@@ -184,6 +202,8 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
     longest = 0.0
     hits = 0
     box = np.empty(4)
+    work = toi_work(max(widest(first), widest(wfirst)))
+    start, end = work[4][0], work[4][1]
     for q in range(len(rows)):
         k = rows[q]
         if state[k, ASLEEP] != 0.0:
@@ -199,13 +219,14 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
         count = overlapping(*grid, box, seen, found)
         if count == 0:
             continue
-        start, end = np.array((x0, y0, a0)), np.array((x1, y1, a1))
+        start[0], start[1], start[2] = x0, y0, a0
+        end[0], end[1], end[2] = x1, y1, a1
         best = 1.0
         for n in range(count):
             w = found[n]
             for i in range(body_first[q], body_first[q + 1]):
                 t = time_of_impact(lv, ln, first[i], first[i + 1], reach[i], start, end, wv, wn, wfirst[w],
-                                   wfirst[w + 1], target, tolerance, allowance)
+                                   wfirst[w + 1], target, tolerance, allowance, work)
                 if t < best:
                     best = t
         out[q] = best
@@ -217,14 +238,15 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
 @kernel
 def first_pair_hit(lva: np.ndarray, lna: np.ndarray, fa: np.ndarray, ra: np.ndarray, start_a: np.ndarray,
                    end_a: np.ndarray, lvb: np.ndarray, lnb: np.ndarray, fb: np.ndarray, rb: np.ndarray,
-                   start_b: np.ndarray, end_b: np.ndarray, target: float, tolerance: float, allowance: float) -> float:
+                   start_b: np.ndarray, end_b: np.ndarray, target: float, tolerance: float, allowance: float,
+                   work: tuple) -> float:
     """The earliest impact of any piece of body A with any piece of body B, both moving (1.0 if
     none)."""
     best = 1.0
     for i in range(len(fa) - 1):
         for j in range(len(fb) - 1):
             t = pair_time_of_impact(lva, lna, fa[i], fa[i + 1], ra[i], start_a, end_a, lvb, lnb, fb[j], fb[j + 1],
-                                    rb[j], start_b, end_b, target, tolerance, allowance, _NOTHING)
+                                    rb[j], start_b, end_b, target, tolerance, allowance, work[3], False, work)
             if t < best:
                 best = t
     return best
@@ -243,6 +265,8 @@ def body_pair_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.
     each awake dynamic body of the pair and, for a pair with a kinematic body, into `arm_hits[g]`
     (else 1.0) for the caller to judge the arm. Returns how many pairs hit."""
     count = 0
+    work = toi_work(widest(first))
+    start_a, end_a, start_b, end_b = work[4][0], work[4][1], work[4][2], work[4][3]
     for g in range(len(pairs)):
         arm_hits[g] = 1.0
         a, b = pairs[g, 0], pairs[g, 1]
@@ -266,12 +290,13 @@ def body_pair_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.
             continue
         pa0, pa1, pb0, pb1 = body_first[a], body_first[a + 1], body_first[b], body_first[b + 1]
         va0, va1, vb0, vb1 = first[pa0], first[pa1], first[pb0], first[pb1]
-        hit = first_pair_hit(lv[va0:va1], ln[va0:va1], first[pa0:pa1 + 1] - va0, reach[pa0:pa1],
-                             np.array((state[ka, X0], state[ka, Y0], state[ka, ANGLE0])),
-                             np.array((state[ka, X], state[ka, Y], state[ka, ANGLE])),
-                             lv[vb0:vb1], ln[vb0:vb1], first[pb0:pb1 + 1] - vb0, reach[pb0:pb1],
-                             np.array((state[kb, X0], state[kb, Y0], state[kb, ANGLE0])),
-                             np.array((state[kb, X], state[kb, Y], state[kb, ANGLE])), target, tolerance, allowance)
+        start_a[0], start_a[1], start_a[2] = state[ka, X0], state[ka, Y0], state[ka, ANGLE0]
+        end_a[0], end_a[1], end_a[2] = state[ka, X], state[ka, Y], state[ka, ANGLE]
+        start_b[0], start_b[1], start_b[2] = state[kb, X0], state[kb, Y0], state[kb, ANGLE0]
+        end_b[0], end_b[1], end_b[2] = state[kb, X], state[kb, Y], state[kb, ANGLE]
+        hit = first_pair_hit(lv[va0:va1], ln[va0:va1], first[pa0:pa1 + 1] - va0, reach[pa0:pa1], start_a, end_a,
+                             lv[vb0:vb1], ln[vb0:vb1], first[pb0:pb1 + 1] - vb0, reach[pb0:pb1], start_b, end_b,
+                             target, tolerance, allowance, work)
         if hit < 1.0:
             count += 1
             if dyn_a and state[ka, ASLEEP] == 0.0 and hit < hits[a]:
@@ -286,14 +311,16 @@ def body_pair_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.
 @kernel
 def reaches_wall(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, x: float, y: float,
                  angle: float, vx: float, vy: float, spin: float, dt: float, wv: np.ndarray, wn: np.ndarray, ws: int,
-                 we: int) -> bool:
+                 we: int, work: tuple) -> bool:
     """Whether the body, moving on with its velocity for dt, would press into the wall piece (by
-    more than GAP_TOLERANCE: a face that only grazes a corner, level with it, is not a hit)."""
-    pose = np.array((x, y, angle))
-    end = np.array((x + vx * dt, y + vy * dt, angle + spin * dt))
+    more than GAP_TOLERANCE: a face that only grazes a corner, level with it, is not a hit).
+    `work`: scratch (`toi_work`)."""
+    pose, end = work[4][0], work[4][1]
+    pose[0], pose[1], pose[2] = x, y, angle
+    end[0], end[1], end[2] = x + vx * dt, y + vy * dt, angle + spin * dt
     for i in range(len(first) - 1):
         if time_of_impact(lv, ln, first[i], first[i + 1], reach[i], pose, end, wv, wn, ws, we, -GAP_TOLERANCE,
-                          GAP_TOLERANCE / 2, 0.0) < 1.0:
+                          GAP_TOLERANCE / 2, 0.0, work) < 1.0:
             return True
     return False
 
@@ -302,15 +329,16 @@ def reaches_wall(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.nd
 def pair_reaches(lva: np.ndarray, lna: np.ndarray, fa: np.ndarray, ra: np.ndarray, radius_a: float,
                  pose_a: np.ndarray, vel_a: np.ndarray, lvb: np.ndarray, lnb: np.ndarray, fb: np.ndarray,
                  rb: np.ndarray, radius_b: float, pose_b: np.ndarray, vel_b: np.ndarray, dt: float, gap: float,
-                 may_halt_a: bool, may_halt_b: bool) -> bool:
+                 may_halt_a: bool, may_halt_b: bool, work: tuple) -> bool:
     """The same for two bodies: whether they would press into each other (by more than
     GAP_TOLERANCE) within dt, moving on as they are, or with either one halted (if `may_halt_` it:
     it has something else to meet). The solve that follows may stop a body against something else (a
     light ball the heavy block drives into a wall); a kept gap between bodies that then part costs
     nothing, as the solver only stops approach. `gap` (their separation now) rules out at once
-    bodies too slow to close it."""
+    bodies too slow to close it. `work`: scratch (`toi_work`); its motions must not hold the poses
+    and velocities."""
     turn_a, turn_b = abs(vel_a[2]) * radius_a, abs(vel_b[2]) * radius_b
-    end_a, end_b = np.empty(3), np.empty(3)
+    end_a, end_b = work[4][2], work[4][3]
     for k in range(3):
         end_a[k] = pose_a[k] + vel_a[k] * dt
         end_b[k] = pose_b[k] + vel_b[k] * dt
@@ -332,16 +360,14 @@ def pair_reaches(lva: np.ndarray, lna: np.ndarray, fa: np.ndarray, ra: np.ndarra
         return False
     for i in range(len(fa) - 1):
         for j in range(len(fb) - 1):
-            na_, nb_ = fa[i + 1] - fa[i], fb[j + 1] - fb[j]
-            pa_v, pa_n = np.empty((na_, 2)), np.empty((na_, 2))
-            pb_v, pb_n = np.empty((nb_, 2)), np.empty((nb_, 2))
-            at_start = np.empty(na_ + nb_)
+            posed, at_start = work[0], work[3]
             _separations(lva, lna, fa[i], fa[i + 1], pose_a[0], pose_a[1], pose_a[2], lvb, lnb, fb[j], fb[j + 1],
-                         pose_b[0], pose_b[1], pose_b[2], False, pa_v, pa_n, pb_v, pb_n, False, at_start)
+                         pose_b[0], pose_b[1], pose_b[2], False, posed[0], posed[1], posed[2], posed[3], False,
+                         at_start)
             for m in range(3):
                 if use[m] and pair_time_of_impact(lva, lna, fa[i], fa[i + 1], ra[i], pose_a, moves_a[m], lvb, lnb,
                                                   fb[j], fb[j + 1], rb[j], pose_b, moves_b[m], -GAP_TOLERANCE,
-                                                  GAP_TOLERANCE / 2, 0.0, at_start) < 1.0:
+                                                  GAP_TOLERANCE / 2, 0.0, at_start, True, work) < 1.0:
                     return True
     return False
 
@@ -357,6 +383,8 @@ def pairs_apart(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.nda
     can reach it through a chain of pairs that do touch. `pressed[q]`: the body is in a pair that
     touches (or is pushed through such a chain)."""
     busy = np.zeros(len(rows), dtype=np.int64)
+    work = toi_work(widest(first))
+    pose_a, vel_a, pose_b, vel_b = np.empty(3), np.empty(3), np.empty(3), np.empty(3)
     for g in range(len(pairs)):
         busy[pairs[g, 0]] += 1
         busy[pairs[g, 1]] += 1
@@ -371,13 +399,14 @@ def pairs_apart(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.nda
         ka, kb = rows[a], rows[b]
         pa0, pa1, pb0, pb1 = body_first[a], body_first[a + 1], body_first[b], body_first[b + 1]
         va0, va1, vb0, vb1 = first[pa0], first[pa1], first[pb0], first[pb1]
+        pose_a[0], pose_a[1], pose_a[2] = state[ka, X], state[ka, Y], state[ka, ANGLE]
+        vel_a[0], vel_a[1], vel_a[2] = state[ka, VX], state[ka, VY], state[ka, SPIN]
+        pose_b[0], pose_b[1], pose_b[2] = state[kb, X], state[kb, Y], state[kb, ANGLE]
+        vel_b[0], vel_b[1], vel_b[2] = state[kb, VX], state[kb, VY], state[kb, SPIN]
         apart[g] = not pair_reaches(
-            lv[va0:va1], ln[va0:va1], first[pa0:pa1 + 1] - va0, reach[pa0:pa1], radius[a],
-            np.array((state[ka, X], state[ka, Y], state[ka, ANGLE])),
-            np.array((state[ka, VX], state[ka, VY], state[ka, SPIN])),
-            lv[vb0:vb1], ln[vb0:vb1], first[pb0:pb1 + 1] - vb0, reach[pb0:pb1], radius[b],
-            np.array((state[kb, X], state[kb, Y], state[kb, ANGLE])),
-            np.array((state[kb, VX], state[kb, VY], state[kb, SPIN])), dt, gaps[g], busy[a] > 1, busy[b] > 1)
+            lv[va0:va1], ln[va0:va1], first[pa0:pa1 + 1] - va0, reach[pa0:pa1], radius[a], pose_a, vel_a,
+            lv[vb0:vb1], ln[vb0:vb1], first[pb0:pb1 + 1] - vb0, reach[pb0:pb1], radius[b], pose_b, vel_b,
+            dt, gaps[g], busy[a] > 1, busy[b] > 1, work)
     pressed[:] = False
     grew = False
     for g in range(len(pairs)):
@@ -409,7 +438,7 @@ def _warm() -> None:
                     table.body_first, state, np.array([0, 1], dtype=np.int64), np.full(2, 0.71), 0.005, grid.arrays,
                     np.zeros(1, dtype=np.bool_), np.empty(1, dtype=np.int64), wall.verts, wall.normals, wall.first,
                     0.005, 0.001, 0.005, np.empty(2))
-    first_pair_hit(*args, start, end, *args, still, still, 0.005, 0.001, 0.005)
+    first_pair_hit(*args, start, end, *args, still, still, 0.005, 0.001, 0.005, toi_work(4))
     body_pair_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                    table.body_first, np.array([[0, 1]], dtype=np.int64), state, np.array([0, 1], dtype=np.int64),
                    np.full(2, 0.71), np.full(2, 1.0), True, 0.005, 0.005, 0.001, 0.005, np.ones(2), np.ones(1))
@@ -417,5 +446,5 @@ def _warm() -> None:
                 np.array([[0, 1]], dtype=np.int64), np.array([0.01]), state, np.array([0, 1], dtype=np.int64),
                 np.full(2, 0.71), np.zeros(1, dtype=np.int64), 1.0 / 240.0, np.zeros(1, dtype=np.bool_),
                 np.zeros(2, dtype=np.bool_))
-    reaches_wall(*args, 0.0, 0.0, 0.0, 2.0, 0.0, 0.5, 1.0 / 240.0, wall.verts, wall.normals, 0, 4)
-    pair_reaches(*args, 0.7, start, end, *args, 0.7, still, end, 1.0 / 240.0, 0.01, True, True)
+    reaches_wall(*args, 0.0, 0.0, 0.0, 2.0, 0.0, 0.5, 1.0 / 240.0, wall.verts, wall.normals, 0, 4, toi_work(4))
+    pair_reaches(*args, 0.7, start, end, *args, 0.7, still, end, 1.0 / 240.0, 0.01, True, True, toi_work(4))

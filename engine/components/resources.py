@@ -87,6 +87,8 @@ class Shapes:
     materials: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))  # restitution, friction
     _selection: Selection = field(default_factory=Selection)
     _lookup: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+    _everyone: list | None = None  # esper's list of bodies when `current` last answered
+    _current: tuple = ()
 
     def index(self, ents: np.ndarray) -> np.ndarray:
         """The rows (as `of` gives them) of these entities, each of which has a body and a collider."""
@@ -111,6 +113,18 @@ class Shapes:
         """Each body's row in the store (gathered for this substep), in the order of `bodies` (as `of`)."""
         self.of(bodies)
         return self._selection.of(store, bodies)
+
+    def current(self, store: BodyStore, everyone: list, bodies: list) -> tuple[np.ndarray, ShapeTable, np.ndarray]:
+        """The store's state gathered for `esper.get_component(Body)` (`everyone`), the shape table
+        for `esper.get_components(Body, Collider)` (`bodies`) and each of those bodies' rows in the
+        state: what a contact stage reads each substep, worked out again only when either list
+        changes (two identity tests while nothing is added or taken away)."""
+        if everyone is not self._everyone or bodies is not self._bodies:
+            state = store.gather(everyone)
+            table, _ = self.of(bodies)
+            self._current = (state, table, self._selection.of(store, bodies))
+            self._everyone = everyone
+        return self._current
 
 
 @dataclass(slots=True)

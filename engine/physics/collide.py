@@ -96,12 +96,12 @@ def _clip(points: np.ndarray, count: int, nx: float, ny: float, offset: float, p
 @kernel
 def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndarray, nb: np.ndarray, sb: int,
                    eb: int, internal: np.ndarray, hidden: np.ndarray, seams: bool, margin: float,
-                   out: np.ndarray, row: int) -> int:
+                   out: np.ndarray, row: int, clip: np.ndarray) -> int:
     """Contact manifold of two convex CCW pieces, or nothing if they are more than `margin` apart.
 
     Writes up to two contact rows from `row` on (columns X..NY; the normal points from A to B) and
     returns how many. With `seams`, `internal` and `hidden` mark B's edges and vertices row for row
-    with `vb` (B is a wall piece)."""
+    with `vb` (B is a wall piece). `clip`: (3, 3) scratch for the clipped points."""
     no_skip = NO_SEAMS
     sep_a, edge_a = max_separation(va, na, sa, ea, vb, sb, eb, no_skip, -1)
     if sep_a > margin:
@@ -155,7 +155,7 @@ def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndar
 
     # Clip the incident segment to the slab between the reference face's two side planes.
     # Feature ids: an unclipped point keeps its incident vertex; a clipped one takes the side plane.
-    points = np.empty((3, 3))
+    points = clip
     points[0, 0], points[0, 1], points[0, 2] = inc_v[is_ + i1, 0], inc_v[is_ + i1, 1], i1
     points[1, 0], points[1, 1], points[1, 2] = inc_v[is_ + i2, 0], inc_v[is_ + i2, 1], i2
     lo = tx * r1x + ty * r1y
@@ -188,11 +188,11 @@ def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndar
 @kernel
 def collide_sets(va: np.ndarray, na: np.ndarray, fa: np.ndarray, vb: np.ndarray, nb: np.ndarray, fb: np.ndarray,
                  pieces_b: np.ndarray, internal: np.ndarray, hidden: np.ndarray, seams: bool, margin: float,
-                 b_outer: bool, out: np.ndarray) -> int:
+                 b_outer: bool, out: np.ndarray, clip: np.ndarray) -> int:
     """Every contact between the pieces of A (`fa` ranges of va/na, world coordinates) and the
     pieces of B listed in `pieces_b`: A's pieces in the outer loop, or B's if `b_outer` (a body
     against wall pieces, judged piece by piece). Rows carry the two piece indices; `out` needs
-    2·(A's pieces)·len(pieces_b) rows. Returns the rows written."""
+    2·(A's pieces)·len(pieces_b) rows. Returns the rows written. `clip`: `collide_convex`'s scratch."""
     rows = 0
     count_a, count_b = len(fa) - 1, len(pieces_b)
     for outer in range(count_b if b_outer else count_a):
@@ -200,7 +200,7 @@ def collide_sets(va: np.ndarray, na: np.ndarray, fa: np.ndarray, vb: np.ndarray,
             i, jj = (inner, outer) if b_outer else (outer, inner)
             j = pieces_b[jj]
             made = collide_convex(va, na, fa[i], fa[i + 1], vb, nb, fb[j], fb[j + 1], internal, hidden, seams,
-                                  margin, out, rows)
+                                  margin, out, rows, clip)
             for k in range(rows, rows + made):
                 out[k, PIECE_A], out[k, PIECE_B] = i, j
             rows += made
@@ -211,15 +211,15 @@ def collide_sets(va: np.ndarray, na: np.ndarray, fa: np.ndarray, vb: np.ndarray,
 def wall_contacts(va: np.ndarray, na: np.ndarray, shape_verts: np.ndarray, shape_normals: np.ndarray,
                   fa: np.ndarray, reach: np.ndarray, x: float, y: float, angle: float, vx: float, vy: float,
                   spin: float, dt: float, pressed: bool, walls: tuple, pieces: np.ndarray,
-                  margin: float, out: np.ndarray, work: tuple) -> int:
+                  margin: float, out: np.ndarray, clip: np.ndarray, work: tuple) -> int:
     """A body's contacts with the wall pieces listed (`collide_sets`, wall piece by wall piece),
     keeping those of a piece only if the body touches it (within GAP_TOLERANCE), or is `pressed` by
     another body, or would close the gap moving on as it is for dt (`toi.reaches_wall`): a ball
     passing a corner it never touches is never hit. `va`, `na`: the body's pieces posed at (x, y,
     angle); `shape_*`: the same in its own frame. Returns the rows kept, at the top of `out`.
-    `work`: the time of impact's scratch (`toi.toi_work`)."""
+    `clip`, `work`: scratch for `collide_convex` and the time of impact (`toi.toi_work`)."""
     wv, wn, wf, internal, hidden = walls
-    rows = collide_sets(va, na, fa, wv, wn, wf, pieces, internal, hidden, True, margin, True, out)
+    rows = collide_sets(va, na, fa, wv, wn, wf, pieces, internal, hidden, True, margin, True, out, clip)
     kept = 0
     k = 0
     while k < rows:
@@ -256,14 +256,15 @@ def bodies_wall_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reac
     kept = 0
     # Each body is posed into its own rows of one table-sized array: nothing is allocated a body.
     verts, normals = np.empty((len(lv), 2)), np.empty((len(lv), 2))
-    work = toi_work(max(widest(first), widest(walls[2])))
+    work, clip = toi_work(max(widest(first), widest(walls[2]))), np.empty((3, 3))
     for q in range(len(which)):
         p0, p1 = body_first[which[q]], body_first[which[q] + 1]
         v0, v1 = first[p0], first[p1]
         x, y, angle, vx, vy, spin = states[q]
         pose_piece(lv, ln, v0, v1, x, y, angle, verts[v0:v1], normals[v0:v1])
         made = wall_contacts(verts, normals, lv, ln, first[p0:p1 + 1], reach[p0:p1], x, y, angle, vx, vy, spin, dt,
-                             pressed[q], walls, near[near_first[q]:near_first[q + 1]], margin, out[kept:], work)
+                             pressed[q], walls, near[near_first[q]:near_first[q + 1]], margin, out[kept:], clip,
+                             work)
         for k in range(kept, kept + made):
             out[k, BODY] = q
         kept += made
@@ -287,6 +288,11 @@ def bodies_pair_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body
     pair_first = np.zeros(len(pairs) + 1, dtype=np.int64)
     touching = np.empty((len(pairs), 2), dtype=np.int64)
     gaps = np.empty(len(pairs))
+    # Every body is posed once, into its own rows of one table-sized array, however many pairs it is in.
+    posed_v, posed_n = np.empty((len(lv), 2)), np.empty((len(lv), 2))
+    posed = np.zeros(len(body_first) - 1, dtype=np.bool_)
+    every = np.arange(len(first))  # B's pieces, all of them: every[:count]
+    clip = np.empty((3, 3))
     rows = t = 0
     for g in range(len(pairs)):
         a, b = pairs[g, 0], pairs[g, 1]
@@ -294,13 +300,14 @@ def bodies_pair_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body
         dx, dy = poses[a, 0] - poses[b, 0], poses[a, 1] - poses[b, 1]
         if dx ** 2 + dy ** 2 > reach * reach:
             continue
+        for q in (a, b):
+            if not posed[q]:
+                v0, v1 = first[body_first[q]], first[body_first[q + 1]]
+                pose_piece(lv, ln, v0, v1, poses[q, 0], poses[q, 1], poses[q, 2], posed_v[v0:v1], posed_n[v0:v1])
+                posed[q] = True
         a0, a1, b0, b1 = body_first[a], body_first[a + 1], body_first[b], body_first[b + 1]
-        va, na = np.empty((first[a1] - first[a0], 2)), np.empty((first[a1] - first[a0], 2))
-        vb, nb = np.empty((first[b1] - first[b0], 2)), np.empty((first[b1] - first[b0], 2))
-        pose_piece(lv, ln, first[a0], first[a1], poses[a, 0], poses[a, 1], poses[a, 2], va, na)
-        pose_piece(lv, ln, first[b0], first[b1], poses[b, 0], poses[b, 1], poses[b, 2], vb, nb)
-        made = collide_sets(va, na, first[a0:a1 + 1] - first[a0], vb, nb, first[b0:b1 + 1] - first[b0],
-                            np.arange(b1 - b0), NO_SEAMS, NO_SEAMS, False, margin, False, out[rows:])
+        made = collide_sets(posed_v, posed_n, first[a0:a1 + 1], posed_v, posed_n, first[b0:b1 + 1], every[:b1 - b0],
+                            NO_SEAMS, NO_SEAMS, False, margin, False, out[rows:], clip)
         if made == 0:
             continue
         lowest = out[rows, SEP]
@@ -392,7 +399,8 @@ def collide_polygons(
     internal = np.array([k in internal_b for k in range(len(vb))], dtype=np.bool_)
     hidden = np.array([k in hidden_b for k in range(len(vb))], dtype=np.bool_)
     out = np.empty((2, ROW))
-    made = collide_convex(va, na, 0, len(va), vb, nb, 0, len(vb), internal, hidden, seams, float(margin), out, 0)
+    made = collide_convex(va, na, 0, len(va), vb, nb, 0, len(vb), internal, hidden, seams, float(margin), out, 0,
+                          np.empty((3, 3)))
     if not made:
         return None
     contacts = [RawContact(x=o[X], y=o[Y], separation=o[SEP], feature=int(o[FEATURE]), ref_is_a=bool(o[REF_IS_A]),
@@ -413,9 +421,9 @@ def _warm() -> None:
     walls = (_rows(lifted), na, first, np.zeros(4, dtype=np.bool_), np.zeros(4, dtype=np.bool_))
     for pressed in (False, True):
         wall_contacts(va, na, va, na, first, np.array([0.71]), 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0 / 240.0, pressed,
-                      walls, np.zeros(1, dtype=np.int64), 0.01, np.empty((2, ROW)), toi_work(4))
+                      walls, np.zeros(1, dtype=np.int64), 0.01, np.empty((2, ROW)), np.empty((3, 3)), toi_work(4))
     collide_sets(va, na, first, _rows(lifted), na, first, np.zeros(1, dtype=np.int64), NO_SEAMS, NO_SEAMS, False,
-                 0.01, False, np.empty((2, ROW)))
+                 0.01, False, np.empty((2, ROW)), np.empty((3, 3)))
     table = ShapeTable.of([ConvexSet.of([square], [normals])])
     bodies_wall_contacts(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                          table.body_first, np.zeros(1, dtype=np.int64), np.array([[0.0, 0.0, 0.0, 0.0, 1.0, 0.0]]),

@@ -289,14 +289,13 @@ def body_pair_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.
         if travel < limit:
             continue
         pa0, pa1, pb0, pb1 = body_first[a], body_first[a + 1], body_first[b], body_first[b + 1]
-        va0, va1, vb0, vb1 = first[pa0], first[pa1], first[pb0], first[pb1]
         start_a[0], start_a[1], start_a[2] = state[ka, X0], state[ka, Y0], state[ka, ANGLE0]
         end_a[0], end_a[1], end_a[2] = state[ka, X], state[ka, Y], state[ka, ANGLE]
         start_b[0], start_b[1], start_b[2] = state[kb, X0], state[kb, Y0], state[kb, ANGLE0]
         end_b[0], end_b[1], end_b[2] = state[kb, X], state[kb, Y], state[kb, ANGLE]
-        hit = first_pair_hit(lv[va0:va1], ln[va0:va1], first[pa0:pa1 + 1] - va0, reach[pa0:pa1], start_a, end_a,
-                             lv[vb0:vb1], ln[vb0:vb1], first[pb0:pb1 + 1] - vb0, reach[pb0:pb1], start_b, end_b,
-                             target, tolerance, allowance, work)
+        hit = first_pair_hit(lv, ln, first[pa0:pa1 + 1], reach[pa0:pa1], start_a, end_a,
+                             lv, ln, first[pb0:pb1 + 1], reach[pb0:pb1], start_b, end_b, target, tolerance, allowance,
+                             work)
         if hit < 1.0:
             count += 1
             if dyn_a and state[ka, ASLEEP] == 0.0 and hit < hits[a]:
@@ -398,14 +397,13 @@ def pairs_apart(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.nda
         a, b = pairs[g, 0], pairs[g, 1]
         ka, kb = rows[a], rows[b]
         pa0, pa1, pb0, pb1 = body_first[a], body_first[a + 1], body_first[b], body_first[b + 1]
-        va0, va1, vb0, vb1 = first[pa0], first[pa1], first[pb0], first[pb1]
         pose_a[0], pose_a[1], pose_a[2] = state[ka, X], state[ka, Y], state[ka, ANGLE]
         vel_a[0], vel_a[1], vel_a[2] = state[ka, VX], state[ka, VY], state[ka, SPIN]
         pose_b[0], pose_b[1], pose_b[2] = state[kb, X], state[kb, Y], state[kb, ANGLE]
         vel_b[0], vel_b[1], vel_b[2] = state[kb, VX], state[kb, VY], state[kb, SPIN]
         apart[g] = not pair_reaches(
-            lv[va0:va1], ln[va0:va1], first[pa0:pa1 + 1] - va0, reach[pa0:pa1], radius[a], pose_a, vel_a,
-            lv[vb0:vb1], ln[vb0:vb1], first[pb0:pb1 + 1] - vb0, reach[pb0:pb1], radius[b], pose_b, vel_b,
+            lv, ln, first[pa0:pa1 + 1], reach[pa0:pa1], radius[a], pose_a, vel_a,
+            lv, ln, first[pb0:pb1 + 1], reach[pb0:pb1], radius[b], pose_b, vel_b,
             dt, gaps[g], busy[a] > 1, busy[b] > 1, work)
     pressed[:] = False
     grew = False

@@ -7,6 +7,8 @@ from polygolf.engine.physics.grid import bodies_near, body_pairs, by_entity
 from polygolf.engine.physics.settings import CONTACT_MARGIN
 
 _NO_PAIRS = np.zeros((0, 2), dtype=np.int64)
+_NONE_NEAR = np.zeros(0, dtype=np.int64)
+_NO_ROWS = np.zeros(1, dtype=np.int64)
 
 
 class BroadphaseProcessor(esper.Processor):
@@ -25,21 +27,23 @@ class BroadphaseProcessor(esper.Processor):
         self._found = np.empty(16, dtype=np.int64)
 
     def process(self) -> None:
-        self.bodies.gather(esper.get_component(Body))
         bodies = esper.get_components(Body, Collider)
-        rows = self.shapes.rows(self.bodies, bodies)
+        state, _, rows = self.shapes.current(self.bodies, esper.get_component(Body), bodies)
         ents = self.shapes.ents
         if len(self._near) != len(rows):
             self._near, self._first = np.empty(len(rows), dtype=np.int64), np.empty(len(rows) + 1, dtype=np.int64)
-        self._found, count = bodies_near(self.bodies.state, rows, self.shapes.radius, CONTACT_MARGIN,
+        self._found, count = bodies_near(state, rows, self.shapes.radius, CONTACT_MARGIN,
                                          *self.statics.grid.arrays, self._seen, self._scratch, self._near, self._first,
                                          self._found)
         candidates = self.candidates
-        candidates.near = ents[self._near[:count]]
-        candidates.near_first = self._first[:count + 1].copy()
-        candidates.near_found = self._found[:self._first[count]].copy()
+        if count:
+            candidates.near = ents[self._near[:count]]
+            candidates.near_first = self._first[:count + 1].copy()
+            candidates.near_found = self._found[:self._first[count]].copy()
+        else:  # most substeps of a ball in the open
+            candidates.near, candidates.near_first, candidates.near_found = _NONE_NEAR, _NO_ROWS, _NONE_NEAR
         pairs = _NO_PAIRS
         if len(bodies) > 1:
-            pairs = by_entity(body_pairs(self.bodies.state, rows, self.shapes.radius, CONTACT_MARGIN, False,
+            pairs = by_entity(body_pairs(state, rows, self.shapes.radius, CONTACT_MARGIN, False,
                                          self.config.collide_bodies, False), ents)
         self.candidates.pair_ents = pairs  # in entity order, whichever way they were found

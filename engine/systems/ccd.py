@@ -36,9 +36,7 @@ class CCDProcessor(esper.Processor):
 
     def process(self) -> None:
         bodies = esper.get_components(Body, Collider)
-        table, _ = self.shapes.of(bodies)
-        state = self.bodies.gather(esper.get_component(Body))
-        rows = self.shapes.rows(self.bodies, bodies)
+        state, table, rows = self.shapes.current(self.bodies, esper.get_component(Body), bodies)
         walls = self.statics.pieces
         if len(self._hits) != len(rows):
             self._hits = np.empty(len(rows))

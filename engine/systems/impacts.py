@@ -20,6 +20,8 @@ class ImpactsProcessor(esper.Processor):
 
     def process(self) -> None:
         table = self.contacts.table
+        if not len(table):
+            return
         approach = table.points[:, P_APPROACH]
         resting = approach >= -RESTITUTION_THRESHOLD
         if resting.all():

@@ -24,15 +24,27 @@ class IntegrateProcessor(esper.Processor):
     def __init__(self, res: Resources) -> None:
         self.config, self.contacts, self.bodies = res.config, res.contacts, res.bodies
         self._dragged = Selection()
+        self._rows: np.ndarray | None = None
+        self._dragged_mask = np.zeros(0, dtype=np.bool_)  # bodies slowed by drag, for the rows above
+        self._settles = np.zeros(0, dtype=np.bool_)
+        self._touched = False  # whether `_settles` holds touching bodies besides the dragged
 
     def process(self) -> None:
         state = self.bodies.gather(esper.get_component(Body))
-        settles = np.zeros(len(state), dtype=np.bool_)
-        settles[self._dragged.of(self.bodies, esper.get_components(Body, Drag))] = True
-        rows = self.bodies.rows
-        for ent in self.contacts.touching:
-            row = rows.get(ent)
-            if row is not None:
-                settles[row] = True
+        dragged = self._dragged.of(self.bodies, esper.get_components(Body, Drag))
+        if dragged is not self._rows or len(self._dragged_mask) != len(state):
+            self._dragged_mask = np.zeros(len(state), dtype=np.bool_)
+            self._dragged_mask[dragged] = True
+            self._settles, self._rows, self._touched = self._dragged_mask.copy(), dragged, True
+        settles = self._settles  # dragged, or touching something (this substep's contacts)
+        table = self.contacts.table
+        if len(table) or self._touched:
+            settles[:] = self._dragged_mask
+            rows = self.bodies.rows
+            for ent in np.unique(table.ents).tolist():
+                row = rows.get(ent)
+                if row is not None:
+                    settles[row] = True
+            self._touched = len(table) > 0
         dt = self.config.dt
         advance(state, settles, dt, REST_LINEAR * dt, REST_ANGULAR * dt, REST_SPEED_CAP, TIME_TO_REST)

@@ -35,25 +35,27 @@ class NarrowphaseProcessor(esper.Processor):
         self.statics, self.stats = res.statics, res.stats
         self.shapes, self.bodies = res.shapes, res.bodies
         self._empty = ContactTable.empty()
+        self._pressed = self._unpressed = np.zeros(0, dtype=np.bool_)
 
     def process(self) -> None:
         knobs, dt = self.config.knobs, self.config.dt
-        state = self.bodies.gather(esper.get_component(Body))
+        everyone = esper.get_components(Body, Collider)
+        state, table, store_rows = self.shapes.current(self.bodies, esper.get_component(Body), everyone)
 
         # Pairs first (added after the walls, as always): a body another one presses on this substep
         # can be pushed into a wall it is not moving towards yet, so its wall gaps must stay contacts.
-        everyone = esper.get_components(Body, Collider)
-        table, _ = self.shapes.of(everyone)
-        store_rows = self.shapes.rows(self.bodies, everyone)
         pairs = _NOT_TOUCHING
-        pressed = np.zeros(len(store_rows), dtype=np.bool_)
+        if len(self._pressed) != len(store_rows):
+            self._pressed = np.zeros(len(store_rows), dtype=np.bool_)
+            self._unpressed = np.zeros(len(store_rows), dtype=np.bool_)
+        pressed = self._unpressed  # nobody, unless `pairs_apart` says otherwise below (never written)
         if len(self.candidates.pair_ents):
             pair_rows, pair_first, pairs, gaps = bodies_pair_contacts(
                 table.pieces.verts, table.pieces.normals, table.pieces.first, table.body_first,
                 self.shapes.index(self.candidates.pair_ents), state[store_rows, X:ANGLE + 1], self.shapes.radius,
                 CONTACT_MARGIN)
         if len(pairs):
-            apart = np.empty(len(pairs), dtype=np.bool_)
+            apart, pressed = np.empty(len(pairs), dtype=np.bool_), self._pressed
             pairs_apart(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                         table.body_first, pairs, gaps, state, store_rows, self.shapes.radius,
                         self.shapes.index(self.candidates.near), dt, apart, pressed)

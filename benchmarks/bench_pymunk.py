@@ -105,7 +105,7 @@ def parallel_shots(count: int, preset: str, seconds: float) -> tuple[float, floa
     shots = [Shot(tee, (2.4 * math.cos(2 * math.pi * k / count), 2.4 * math.sin(2 * math.pi * k / count)))
              for k in range(count)]
     start = time.perf_counter()
-    results = simulate_shots(hole, ShapeSpec(regular=6, radius=1.0), shots, preset, max_seconds=seconds)
+    results = simulate_shots(hole, shots, preset, shape=ShapeSpec(regular=6, radius=1.0), max_seconds=seconds)
     ours = sum(r.seconds for r in results) / FRAME_DT / (time.perf_counter() - start)
     scene = ball_on_hole(collide_bodies=False, count=count, speed=2.4 * SHOT_POWER)  # the shots' launch speed
     space = pymunk_space(scene, PRESETS[preset].iterations, collide_bodies=False)

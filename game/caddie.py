@@ -246,7 +246,7 @@ def preview_path(hole: HolePlay, shape: ShapeSpec, grab: Vec, arrow: Vec) -> tup
     shot = Shot(start, arrow, (grab[0] - ball.x, grab[1] - ball.y), ball.angle)
     others = [_outline_at(p.collider.outline, p.body.x, p.body.y, p.body.angle)
               for seat, p in enumerate(hole.players) if seat != hole.turn and not p.state.finished]
-    result, = simulate_shots(hole.hole, shape, [shot], hole.knobs, PREVIEW_SECONDS, path=True,
+    result, = simulate_shots(hole.hole, [shot], hole.knobs, shape=shape, max_seconds=PREVIEW_SECONDS, path=True,
                              windmills=[w.angle for w in hole.windmills], until_contact=True, obstacles=others)
     path = result.path
     if result.contact is not None:

@@ -7,13 +7,14 @@ import re
 
 from pydantic import ValidationError
 
+from polygolf.engine.golf.world import DEFAULT_BALL
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.physics.polygon import MAX_SIDES, MIN_SIDES
 
 CATALOGUE: list[tuple[str, ShapeSpec]] = [
     ("Triangle", ShapeSpec(regular=3, radius=1.0)),
     ("Square", ShapeSpec(regular=4, radius=1.0)),
-    ("Pentagon", ShapeSpec(regular=5, radius=1.0)),
+    ("Pentagon", DEFAULT_BALL),
     ("Hexagon", ShapeSpec(regular=6, radius=1.0)),
     ("Heptagon", ShapeSpec(regular=7, radius=1.0)),
     ("Octagon", ShapeSpec(regular=8, radius=1.0)),

@@ -53,7 +53,7 @@ def test_simulate_shots_reports_the_first_contact_from_the_worlds_contacts(meado
     tee = hole.layout.tee
     radius = hole.library.ball.radius
     up, along = Shot(tee, (0.3, 3.0)), Shot(tee, (2.0, 0.0))
-    bounced, rolled = simulate_shots(hole, PENTAGON, [up, along], "fast", path=True)
+    bounced, rolled = simulate_shots(hole, [up, along], "fast", path=True)
     contact = bounced.contact
     assert contact is not None and 2 < contact < len(bounced.path) - 1
     before = bounced.path[:contact]  # the points before it struck
@@ -62,9 +62,9 @@ def test_simulate_shots_reports_the_first_contact_from_the_worlds_contacts(meado
     assert _wall_distance(hole, bounced.contact_at) < 0.01 < math.dist(bounced.contact_at, before[-1]) < 2 * radius
     assert rolled.contact is None and rolled.contact_at is None and rolled.holed  # into the cup: nothing struck
     # Followed only up to its contact: the same path, cut after the frame it struck in.
-    cut, = simulate_shots(hole, PENTAGON, [up], "fast", path=True, until_contact=True)
+    cut, = simulate_shots(hole, [up], "fast", path=True, until_contact=True)
     assert (cut.contact, cut.contact_at) == (contact, bounced.contact_at) and cut.path == bounced.path[:contact + 1]
-    assert simulate_shots(hole, PENTAGON, [up], "fast")[0].contact is None  # asked only with the path
+    assert simulate_shots(hole, [up], "fast")[0].contact is None  # asked only with the path
 
 
 def test_the_preview_starts_at_the_ball_and_ends_at_the_first_contact(meadow):
@@ -75,7 +75,7 @@ def test_the_preview_starts_at_the_ball_and_ends_at_the_first_contact(meadow):
         arrow = (1.0, 2.4)  # up into the wall, then on
         path, contact = preview_path(play, PENTAGON, ball, arrow)
         assert path[0] == ball and contact is not None
-        full, = simulate_shots(hole, PENTAGON, [Shot(ball, arrow)], play.knobs, path=True)
+        full, = simulate_shots(hole, [Shot(ball, arrow)], play.knobs, shape=PENTAGON, path=True)
         assert path[1:] == full.path[:full.contact] and contact == full.contact_at  # played, up to the bounce
         assert full.contact < len(full.path) - 5  # and the ball goes on after it
         _played_along(play, ball, arrow, path)  # played for real, the ball goes exactly along the preview
@@ -94,7 +94,8 @@ def test_the_preview_knows_where_the_windmills_stand_now():
         d = math.dist(ball, cup)
         arrow = (4.0 * (cup[0] - ball[0]) / d, 4.0 * (cup[1] - ball[1]) / d)  # hard, through the sweep
         path, contact = preview_path(play, PENTAGON, ball, arrow)
-        as_at_start, = simulate_shots(hole, PENTAGON, [Shot(ball, arrow)], "fast", path=True, until_contact=True)
+        as_at_start, = simulate_shots(hole, [Shot(ball, arrow)], "fast", shape=PENTAGON, path=True,
+                                           until_contact=True)
         assert contact is not None and as_at_start.contact_at != contact  # a blade where it stands now
         _played_along(play, ball, arrow, path)
     finally:

@@ -96,7 +96,7 @@ def test_it_banks_when_the_straight_line_is_blocked() -> None:
     assert not golfer_for(hole).clear(hole.layout.tee, hole.layout.cup)
     choice = SearchGolfer(hole, HEXAGON, "fast", "quick").search(hole.layout.tee)
     assert choice.result.holed
-    path = simulate_shots(hole, HEXAGON, [choice.shot], "fast", path=True)[0].path
+    path = simulate_shots(hole, [choice.shot], "fast", shape=HEXAGON, path=True)[0].path
     headings = [math.atan2(b[1] - a[1], b[0] - a[0]) for a, b in zip(path, path[1:]) if math.dist(a, b) > 1e-3]
     turns = [abs(math.remainder(b - a, math.tau)) for a, b in zip(headings, headings[1:])]
     assert max(turns) > math.radians(30)  # a bounce, not a curve

@@ -45,7 +45,7 @@ def test_each_shot_of_a_batch_ends_bit_for_bit_as_played_alone(courses, course, 
     tee = hole.layout.tee
     shots = [Shot(tee, (4.0 * math.cos(a), 4.0 * math.sin(a)), grab=(0.1 * math.sin(3 * a), 0.0))
              for a in (0.0, 0.4, 1.3, 2.9, 4.4, 5.9)]
-    batch = simulate_shots(hole, STAR, shots, "fast")
+    batch = simulate_shots(hole, shots, "fast", shape=STAR)
     for shot, result in zip(shots, batch):
         rest, holed, penalties = _alone(hole, STAR, shot, "fast")
         assert (result.rest, result.holed, result.penalties) == (rest, holed, penalties)
@@ -54,7 +54,7 @@ def test_each_shot_of_a_batch_ends_bit_for_bit_as_played_alone(courses, course, 
 def test_a_planned_putt_drops_and_says_when(courses):
     hole = find_course(courses, "meadow").holes[0]  # Straight: the cup is in line with the tee
     origin, arrow = golfer_for(hole).plan(hole.layout.tee)
-    result, miss = simulate_shots(hole, STAR, [Shot(origin, arrow), Shot(origin, (-arrow[0], -arrow[1]))])
+    result, miss = simulate_shots(hole, [Shot(origin, arrow), Shot(origin, (-arrow[0], -arrow[1]))], shape=STAR)
     assert result.holed and result.rest == hole.layout.cup and 1.0 < result.seconds < 20.0
     assert not miss.holed and math.dist(miss.rest, hole.layout.cup) > 5.0
 
@@ -62,7 +62,7 @@ def test_a_planned_putt_drops_and_says_when(courses):
 def test_water_costs_a_penalty_and_the_ball_goes_back(courses):
     hole = find_course(courses, "hazards").holes[1]  # Water Carry
     tee = hole.layout.tee
-    results = simulate_shots(hole, STAR, fan(tee, 16, [1.5, 3.0]), "fast", path=True)
+    results = simulate_shots(hole, fan(tee, 16, [1.5, 3.0]), "fast", shape=STAR, path=True)
     wet = [r for r in results if r.penalties]
     assert wet, "no shot of the fan found the water"
     for r in wet:
@@ -75,8 +75,8 @@ def test_water_never_puts_a_ball_back_onto_another(courses):
     to the nearest free drop spot instead (it went back onto it: 434 mm of overlap in the fuzz)."""
     hole = find_course(courses, "hazards").holes[1]  # Water Carry
     tee = hole.layout.tee
-    wet = next(s for s, r in zip(fan(tee, 16, [1.5, 3.0]), simulate_shots(hole, STAR, fan(tee, 16, [1.5, 3.0]), "fast"))
-               if r.penalties)
+    shots = fan(tee, 16, [1.5, 3.0])
+    wet = next(s for s, r in zip(shots, simulate_shots(hole, shots, "fast", shape=STAR)) if r.penalties)
     play = HolePlay(hole, STAR, "fast", players=2)
     try:
         length = math.hypot(*wet.arrow)

@@ -308,7 +308,7 @@ def test_stepping_compiles_nothing_the_warm_ups_did_not():
                 sim.run(1.0)
     for name in ("hazards:6", "meadow:8", "hazards:2"):  # a windmill, bumpers, water
         hole = find_hole(name, ROOT)
-        simulate_shots(hole, ShapeSpec(star=(5, 2), radius=1.0), fan(hole.layout.tee, 6, [1.0, 3.0]), "fast",
+        simulate_shots(hole, fan(hole.layout.tee, 6, [1.0, 3.0]), "fast", shape=ShapeSpec(star=(5, 2), radius=1.0),
                        max_seconds=4.0, path=True)
     added = {name: [s for s in sigs if s not in before.get(name, [])] for name, sigs in _signatures().items()}
     assert not {name: new for name, new in added.items() if new}

@@ -12,8 +12,8 @@ from polygolf.engine.assembly.simulation import Simulation
 from polygolf.engine.assembly.spec import WorldSpec
 from polygolf.engine.components import Ball, Cup, HoleState, Launcher
 from polygolf.engine.golf.holes import Hole, find_course, load_all_courses, load_hole_file
-from polygolf.engine.golf.world import hole_spec
-from polygolf.engine.loading.scene import Scene, ShapeSpec, load_scene, scene_spec
+from polygolf.engine.golf.world import DEFAULT_BALL, hole_spec
+from polygolf.engine.loading.scene import Scene, load_scene, scene_spec
 from polygolf.engine.loading.yamlsource import ContentError, line_of, load_yaml
 from polygolf.engine.physics.presets import Knobs
 
@@ -39,7 +39,7 @@ def scene_on_hole(scene: Scene, hole: Hole) -> WorldSpec:
     """The scene's bodies on the hole: its walls and windmills too, its hazards and cup, and the
     green's drag on every body that has none of its own."""
     own = scene_spec(scene)
-    course = hole_spec(hole, ShapeSpec(regular=5, radius=1.0))
+    course = hole_spec(hole, DEFAULT_BALL)
     green = course.bodies[0].drag
     bodies = [replace(b, drag=b.drag or (replace(green) if green else None),  # each body its own copy
                       extras=(*b.extras, Ball(*b.position))) for b in own.bodies]

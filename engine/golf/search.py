@@ -189,7 +189,8 @@ class SearchGolfer:
 
     def simulate(self, shots: list[Shot], windmills: Sequence[float] = (), path: bool = False) -> list[ShotResult]:
         start = time.perf_counter()
-        results = simulate_shots(self.hole, self.shape, shots, self.knobs, SHOT_SECONDS, path, windmills)
+        results = simulate_shots(self.hole, shots, self.knobs, shape=self.shape, max_seconds=SHOT_SECONDS, path=path,
+                                 windmills=windmills)
         self.stats.shots += len(shots)
         self.stats.seconds += time.perf_counter() - start
         self.stats.ball_seconds += sum(r.seconds for r in results)

@@ -16,7 +16,7 @@ from polygolf.engine.assembly.assemble import assemble
 from polygolf.engine.assembly.spec import WallPart
 from polygolf.engine.components import Ball, Body, HoleState, Material, ShotInput
 from polygolf.engine.golf.holes import Hole
-from polygolf.engine.golf.world import hole_spec
+from polygolf.engine.golf.world import DEFAULT_BALL, hole_spec
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.physics.body import ASLEEP, Selection, X, Y
 from polygolf.engine.physics.polygon import Outline
@@ -50,11 +50,12 @@ class ShotResult:
     contact_at: tuple[float, float] | None = None
 
 
-def simulate_shots(hole: Hole, shape: ShapeSpec, shots: list[Shot], knobs: Knobs | str = "balanced",
-                   max_seconds: float = 20.0, path: bool = False,
+def simulate_shots(hole: Hole, shots: Sequence[Shot], preset: Knobs | str = "balanced", *,
+                   shape: ShapeSpec = DEFAULT_BALL, max_seconds: float = 20.0, path: bool = False,
                    windmills: Sequence[float] = (), until_contact: bool = False,
                    obstacles: Sequence[Outline] = ()) -> list[ShotResult]:
-    """Every shot simulated to rest (or `max_seconds`) in one world; results in the shots' order.
+    """Every shot of a ball of `shape` simulated to rest (or `max_seconds`) in one world, at the
+    accuracy `preset` (a name or knobs); results in the shots' order.
     `windmills`: each windmill's angle when the shots are taken (rad, in the layout's order; the
     game's windmills have turned since the hole began), else as at the start of the hole. With
     `path`, each result also says when its ball first struck something (the impacts stage names the
@@ -76,7 +77,7 @@ def simulate_shots(hole: Hole, shape: ShapeSpec, shots: list[Shot], knobs: Knobs
     # hundreds of times a substep).
     rules = alone.rules if path or until_contact else {k: v for k, v in alone.rules.items() if k != "impacts"}
     sim = assemble(replace(alone, bodies=balls, walls=walls, kinematic=turned + alone.kinematic[len(turned):],
-                           collide_bodies=False, rules=rules), knobs)
+                           collide_bodies=False, rules=rules), preset)
     try:
         esper.switch_world(sim.world)
         rows = sorted(esper.get_components(Body, ShotInput, HoleState))  # entity order = shots' order

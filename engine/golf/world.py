@@ -36,6 +36,8 @@ TEE_SPACING = 2.5  # ball radii between the centres of neighbouring balls on the
 _ZONE_WORDS = {"sand": "bunker", "water": "pond", "ice": "ice sheet", "slope": "slope"}
 _MARKERS = {"sand": Sand, "ice": Ice}
 
+DEFAULT_BALL = ShapeSpec(regular=5, radius=1.0)  # the pentagon: the ball a hole is played with unless another is chosen
+
 
 def _count(n: int, word: str) -> str:
     return f"{n} {word}{'s' if n > 1 else ''}"
@@ -143,4 +145,4 @@ def hole_spec(hole: Hole, shape: ShapeSpec, players: int = 1) -> WorldSpec:
 
 def hole_effects(hole: Hole, substeps: int = 4) -> dict[str, str]:
     """Effect -> why the hole's world has it (the ball's shape does not change the answer)."""
-    return effects_for(hole_spec(hole, ShapeSpec(regular=5, radius=1.0)), substeps)
+    return effects_for(hole_spec(hole, DEFAULT_BALL), substeps)

@@ -28,8 +28,9 @@ from polygolf.engine.assembly.stages import STAGES
 from polygolf.engine.golf.golfer import golfer_for
 from polygolf.engine.golf.holes import find_course, load_courses
 from polygolf.engine.golf.play import HolePlay
+from polygolf.engine.golf.world import DEFAULT_BALL
 from polygolf.engine.loading.paths import SCENES_DIR
-from polygolf.engine.loading.scene import ShapeSpec, build_scene, load_scene
+from polygolf.engine.loading.scene import build_scene, load_scene
 from polygolf.engine.physics import polygon
 from polygolf.engine.physics.presets import PRESETS, Knobs
 from polygolf.engine.physics.settings import LINEAR_SLOP
@@ -201,7 +202,7 @@ def shot_cases(seconds: float = 4.0) -> list[Case]:
     """Real shots on real holes, followed until the ball rests (or `seconds` pass)."""
 
     courses = load_courses()
-    shape = ShapeSpec(regular=5, radius=1.0)
+    shape = DEFAULT_BALL
     cases = []
     for course_name, number, shot in SHOTS:
         hole = find_course(courses, course_name).holes[number - 1]
@@ -357,7 +358,7 @@ def effect_costs(frames: int = 600) -> dict[str, float]:
         if course.name not in ("Meadow", "Hazards"):
             continue
         for hole in course.playable:
-            world = HolePlay(hole, ShapeSpec(regular=5, radius=1.0))
+            world = HolePlay(hole, DEFAULT_BALL)
             try:
                 golfer = golfer_for(hole)
                 for _ in range(frames):

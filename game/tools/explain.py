@@ -13,9 +13,9 @@ from polygolf.engine.assembly.stages import STAGES
 from polygolf.engine.golf.holes import Hole, find_course, load_courses, load_hole
 from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.golf.scenes import build_scene_file
+from polygolf.engine.golf.world import DEFAULT_BALL
 from polygolf.engine.loading.course import load_library
 from polygolf.engine.loading.paths import HOLES_DIR
-from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.loading.yamlsource import ContentError, load_yaml
 
 
@@ -65,7 +65,7 @@ def explain(target: str, preset: str | None = None) -> str:
             with build_scene_file(path, preset) as sim:
                 return _describe(sim.scene_name, sim)
     hole = _hole(target)
-    play = HolePlay(hole, ShapeSpec(regular=5, radius=1.0), preset or "balanced")
+    play = HolePlay(hole, DEFAULT_BALL, preset or "balanced")
     try:
         return _describe(f"{hole.spec.name} ({hole.id})", play.sim)
     finally:

@@ -76,16 +76,24 @@ def make_wall(outline: Sequence[polygon.Vec], material: Material) -> Wall:
 
 def mark_seams(walls: Sequence[Wall]) -> None:
     """Tell every wall piece which of its edges and vertices other pieces cover (physics.seams)."""
-    pieces = [(w, k) for w in walls for k in range(len(w.pieces))]
-    boxes = np.array([w.piece_aabbs[k] for w, k in pieces], dtype=np.float64).reshape(-1, 4)
-    index = BoxGrid(boxes + (-2 * PROBE, -2 * PROBE, 2 * PROBE, 2 * PROBE), 1.0)
-    internal, hidden = covered_features([w.pieces[k] for w, k in pieces], [w.normals[k] for w, k in pieces],
-                                        lambda i: index.query(boxes[i]).tolist())
+    internal, hidden = _seams(tuple(w.pieces for w in walls), tuple(w.normals for w in walls))
     start = 0
     for w in walls:
         count = len(w.pieces)
         w.internal, w.hidden = tuple(internal[start:start + count]), tuple(hidden[start:start + count])
         start += count
+
+
+@functools.lru_cache(maxsize=64)
+def _seams(pieces: tuple[tuple[polygon.Outline, ...], ...], normals: tuple[tuple[tuple[polygon.Vec, ...], ...], ...]
+           ) -> tuple[list[frozenset[int]], list[frozenset[int]]]:
+    """`covered_features` of every piece of these walls, worked out once for a set of walls (a hole's
+    walls are the same each time its world is built: a restart, every shot preview)."""
+    flat = [piece for wall in pieces for piece in wall]
+    boxes = np.array([(min(x for x, _ in p), min(y for _, y in p), max(x for x, _ in p), max(y for _, y in p))
+                      for p in flat], dtype=np.float64).reshape(-1, 4)
+    index = BoxGrid(boxes + (-2 * PROBE, -2 * PROBE, 2 * PROBE, 2 * PROBE), 1.0)
+    return covered_features(flat, [n for wall in normals for n in wall], lambda i: index.query(boxes[i]).tolist())
 
 
 def resolve_knobs(knobs: Knobs | str | None, default: str | None = None) -> tuple[str, Knobs]:

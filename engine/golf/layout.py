@@ -30,6 +30,8 @@ class HoleLayout:
     zones: list[tuple[str, polygon.Outline, tuple[float, float]]] = field(default_factory=list)  # kind, outline, push
     windmills: list[tuple[polygon.Outline, tuple[float, float], float]] = field(default_factory=list)
     # windmills: outline about the pivot, pivot, speed (rad/s)
+    drops: dict[float, tuple[tuple[float, float], ...]] = field(default_factory=dict, repr=False, compare=False)
+    # water's drop spots by ball radius, once worked out (`world.drop_spots`)
 
     @property
     def bounds(self) -> Rect:

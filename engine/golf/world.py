@@ -69,7 +69,15 @@ def tee_spots(layout: HoleLayout, radius: float, players: int) -> list[tuple[flo
 
 def drop_spots(layout: HoleLayout, radius: float) -> tuple[tuple[float, float], ...]:
     """Spots where water may put a ball back when its own spot is taken: every 2.5 radii over the
-    green, where a ball fits (clear of walls, water and windmills' sweeps)."""
+    green, where a ball fits (clear of walls, water and windmills' sweeps). Worked out once a
+    layout and radius (every world of the hole, every shot preview, asks again)."""
+    known = layout.drops.get(radius)
+    if known is None:
+        known = layout.drops[radius] = _drop_spots(layout, radius)
+    return known
+
+
+def _drop_spots(layout: HoleLayout, radius: float) -> tuple[tuple[float, float], ...]:
     step = TEE_SPACING * radius
     spots = []
     for x0, y0, x1, y1 in layout.floor:

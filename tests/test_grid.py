@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 from polygolf.engine.loading.scene import Scene, build_scene
 from polygolf.engine.physics.body import ASLEEP, COLUMNS, INV_MASS, X, Y
-from polygolf.engine.physics.grid import BoxGrid, bodies_near, box_pairs
+from polygolf.engine.physics.grid import BoxGrid, FatBoxes, bodies_near, box_pairs
 
 coord = st.floats(-3000, 3000, allow_nan=False)
 size = st.floats(0.01, 2000, allow_nan=False)
@@ -40,9 +40,9 @@ def test_queries_and_pairs_match_brute_force(items, queries, cell, active):
     state[:, Y] = [(q[1] + q[3]) / 2 for q in queries]
     radius = np.array([(q[2] - q[0]) / 2 for q in queries])
     near, first = np.empty(len(queries), dtype=np.int64), np.empty(len(queries) + 1, dtype=np.int64)
-    found, count = bodies_near(state, np.arange(len(queries), dtype=np.int64), radius, 0.0, *grid.arrays,
-                               np.zeros(len(items), dtype=np.bool_), np.empty(len(items), dtype=np.int64), near,
-                               first, np.empty(1, dtype=np.int64))
+    found, count = bodies_near(state, np.arange(len(queries), dtype=np.int64), radius, 0.0, grid.arrays,
+                               FatBoxes().of(state, len(items)), np.zeros(len(items), dtype=np.bool_),
+                               np.empty(len(items), dtype=np.int64), near, first, np.empty(1, dtype=np.int64))
     answers = {near[k]: found[first[k]:first[k + 1]].tolist() for k in range(count)}
     for q in range(len(queries)):
         x, y, r = state[q, X], state[q, Y], radius[q]
@@ -65,6 +65,35 @@ def test_pairs_of_a_crowd_match_brute_force(items, active):
     expected = sorted((i, j) for i in range(len(items)) for j in range(i + 1, len(items))
                       if _overlaps(items[i], items[j]) and (active[i] or active[j]))
     assert [tuple(p) for p in box_pairs(np.array(items), active).tolist()] == expected
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.builds(lambda x, y, w, h: (x, y, x + w, y + h), st.floats(-5, 5), st.floats(-5, 5),
+                          st.floats(0.0, 2.0), st.floats(0.0, 2.0)), min_size=1, max_size=60),
+       st.lists(st.tuples(st.floats(-0.3, 0.3), st.floats(-0.3, 0.3)), min_size=1, max_size=30),
+       st.floats(0.05, 1.0))
+def test_walls_kept_in_fat_boxes_are_the_grids_answer_as_bodies_move(items, steps, size):
+    """Three bodies wander (each step up to 0.3 m, so some stay inside their fat boxes and some leave
+    them); a crowd of up to 60 boxes (more than a fat box keeps). Every answer, kept or asked for,
+    is the brute-force one, in order."""
+    grid = BoxGrid(np.array(items), 1.0)
+    fat_boxes = FatBoxes()
+    state = np.zeros((3, len(COLUMNS)))
+    state[:, INV_MASS] = 1.0
+    radius = np.array([size, 0.5 * size, 2.0 * size])
+    walls = len(items)
+    near, first, found = np.empty(3, dtype=np.int64), np.empty(4, dtype=np.int64), np.empty(1, dtype=np.int64)
+    for dx, dy in steps:
+        state[:, X] += [dx, -dy, 0.5 * dx]
+        state[:, Y] += [dy, dx, -0.5 * dy]
+        found, count = bodies_near(state, np.arange(3, dtype=np.int64), radius, 0.01, grid.arrays,
+                                   fat_boxes.of(state, walls), np.zeros(walls, dtype=np.bool_),
+                                   np.empty(walls, dtype=np.int64), near, first, found)
+        answers = {near[k]: found[first[k]:first[k + 1]].tolist() for k in range(count)}
+        for q in range(3):
+            r = radius[q] + 0.01
+            square = (state[q, X] - r, state[q, Y] - r, state[q, X] + r, state[q, Y] + r)
+            assert answers.get(q, []) == [i for i, box in enumerate(items) if _overlaps(square, box)]
 
 
 def test_boxes_beyond_the_grid_and_not_numbers_are_answered_too():

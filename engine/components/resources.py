@@ -13,7 +13,7 @@ from polygolf.engine.components.wall import Wall
 from polygolf.engine.physics.body import Body, BodyStore, Selection
 from polygolf.engine.physics.contact import ContactTable, Manifold
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable
-from polygolf.engine.physics.grid import BoxGrid
+from polygolf.engine.physics.grid import BoxGrid, FatBoxes
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import FRAME_DT
 
@@ -241,6 +241,7 @@ class Resources:
     bodies: BodyStore = field(default_factory=BodyStore)
     shapes: Shapes = field(default_factory=Shapes)
     candidates: Candidates = field(default_factory=Candidates)
+    fat_boxes: FatBoxes = field(default_factory=FatBoxes)  # each body's walls near, for ccd and the broadphase
     contacts: Contacts = field(default_factory=Contacts)
     stats: Stats = field(default_factory=Stats)
     events: Events = field(default_factory=Events)

@@ -21,6 +21,8 @@ from polygolf.engine.physics.jit import kernel, warm_up
 
 MAX_CELLS = 256  # cells one box may be filed under
 MAX_GRID = 1 << 20  # cells in a grid; a coarser cell is taken beyond it
+FAT_MARGIN = 0.25  # m: a body's walls are looked up for its box grown by this, and kept while it stays inside
+FAT_KEEP = 32  # walls kept a body; a body with more near it asks the grid every time
 
 
 @kernel
@@ -136,6 +138,71 @@ def _sort_few(values: np.ndarray, count: int) -> None:
         values[b + 1] = v
 
 
+class FatBoxes:
+    """Each body's walls near it, kept between substeps (Box2D's fat boxes): the grid is asked for
+    a body's box grown by FAT_MARGIN and the answer kept; while the body's box stays inside that fat
+    box, the walls its box meets are among those kept, and are picked from them (`walls_near`).
+    Continuous collision (the swept box) and the broadphase (the box with the contact margin) share
+    them, so a moving body asks the grid once every few substeps instead of twice each. Rows are a
+    `body.BodyStore`'s; kept until the store's array changes."""
+
+    __slots__ = ("state", "fat", "walls")
+
+    def __init__(self) -> None:
+        self.state: np.ndarray | None = None
+        self.fat, self.walls = _no_fat_boxes(0, 0)
+
+    def of(self, state: np.ndarray, walls: int) -> tuple[np.ndarray, np.ndarray]:
+        """(fat boxes, kept walls: a count, then the walls) for the rows of `state`, emptied if the
+        store was gathered again."""
+        if state is not self.state:
+            self.state = state
+            self.fat, self.walls = _no_fat_boxes(len(state), min(walls, FAT_KEEP))
+        return self.fat, self.walls
+
+
+def _no_fat_boxes(bodies: int, keep: int) -> tuple[np.ndarray, np.ndarray]:
+    """Nothing kept yet: every fat box empty (inverted), so the first look asks the grid."""
+    fat = np.empty((bodies, 4))
+    fat[:, :2], fat[:, 2:] = np.inf, -np.inf
+    return fat, np.zeros((bodies, 1 + keep), dtype=np.int64)
+
+
+@kernel
+def walls_near(fat: np.ndarray, walls: np.ndarray, k: int, box: np.ndarray, boxes: np.ndarray, out: np.ndarray) -> int:
+    """The grid's boxes (`boxes`) that `box` of body row k overlaps, ascending, into `out`, picked
+    from those kept for its fat box (`FatBoxes`); -1 if `box` is not inside it (`look_up_walls`
+    then). Few arrays pass: a call passing many costs more than this work."""
+    if not (fat[k, 0] <= box[0] and fat[k, 1] <= box[1] and box[2] <= fat[k, 2] and box[3] <= fat[k, 3]):
+        return -1
+    count = 0
+    for m in range(1, walls[k, 0] + 1):  # ascending, as kept
+        i = walls[k, m]
+        if overlaps(box, boxes, i):
+            out[count] = i
+            count += 1
+    return count
+
+
+@kernel
+def look_up_walls(grid: tuple, fat: np.ndarray, walls: np.ndarray, k: int, box: np.ndarray, seen: np.ndarray,
+                  scratch: np.ndarray, out: np.ndarray) -> int:
+    """`walls_near` when `box` has left body row k's fat box: the grid is asked for the box grown by
+    FAT_MARGIN, the answer kept, and the walls `box` meets picked from it (the same answer as asking
+    for `box`, in the same order). A body with more than the table keeps near it asks for `box`."""
+    wide = np.empty(4)
+    wide[0], wide[1] = box[0] - FAT_MARGIN, box[1] - FAT_MARGIN
+    wide[2], wide[3] = box[2] + FAT_MARGIN, box[3] + FAT_MARGIN
+    n = overlapping(*grid, wide, seen, scratch)
+    if n > walls.shape[1] - 1:
+        fat[k, 0], fat[k, 1], fat[k, 2], fat[k, 3] = np.inf, np.inf, -np.inf, -np.inf
+        return overlapping(*grid, box, seen, out)
+    fat[k, 0], fat[k, 1], fat[k, 2], fat[k, 3] = wide[0], wide[1], wide[2], wide[3]
+    walls[k, 0] = n
+    walls[k, 1:n + 1] = scratch[:n]
+    return walls_near(fat, walls, k, box, grid[0], out)
+
+
 @kernel
 def _append(found: np.ndarray, total: int, items: np.ndarray, n: int) -> np.ndarray:
     """items[:n] after the first `total` of `found`, grown (doubled) as needed; the array to use."""
@@ -148,18 +215,20 @@ def _append(found: np.ndarray, total: int, items: np.ndarray, n: int) -> np.ndar
 
 
 @kernel
-def bodies_near(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, margin: float, boxes: np.ndarray, x0: float,
-                y0: float, inv: float, nx: int, ny: int, cell_first: np.ndarray, cell_items: np.ndarray,
-                large: np.ndarray, seen: np.ndarray, scratch: np.ndarray, near: np.ndarray, first: np.ndarray,
+def bodies_near(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, margin: float, grid: tuple,
+                fat_boxes: tuple, seen: np.ndarray, scratch: np.ndarray, near: np.ndarray, first: np.ndarray,
                 found: np.ndarray) -> tuple[np.ndarray, int]:
     """For the awake dynamic bodies among `rows` of a `body.BodyStore` state (bounding radii
-    `radius`, grown by `margin`), the grid's boxes each one's box overlaps, into the caller's
-    arrays (kept from substep to substep: nothing is allocated unless `found` must grow): the
-    bodies that have any (indices into `rows`) into `near`, their boxes in compressed rows
-    (`first`, `found`). `seen` and `scratch`: the grid query's, one row per box; `near` and
-    `first` need len(rows) and len(rows) + 1 rows. Returns `found` (grown if it had to) and how
-    many bodies have boxes near."""
+    `radius`, grown by `margin`), the grid's boxes each one's box overlaps (`grid`: a
+    `BoxGrid.arrays`, asked through the bodies' `FatBoxes.arrays`), into the caller's arrays (kept
+    from substep to substep: nothing is allocated unless `found` must grow): the bodies that have
+    any (indices into `rows`) into `near`, their boxes in compressed rows (`first`, `found`).
+    `seen` and `scratch`: the grid query's, one row per box; `near` and `first` need len(rows)
+    and len(rows) + 1 rows. Returns `found` (grown if it had to) and how many bodies have boxes
+    near."""
     box = np.empty(4)
+    fat, walls = fat_boxes
+    boxes = grid[0]
     bodies, total = 0, 0
     first[0] = 0
     for q in range(len(rows)):
@@ -168,7 +237,9 @@ def bodies_near(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, margin:
             continue
         r = radius[q] + margin
         box[0], box[1], box[2], box[3] = state[k, X] - r, state[k, Y] - r, state[k, X] + r, state[k, Y] + r
-        n = overlapping(boxes, x0, y0, inv, nx, ny, cell_first, cell_items, large, box, seen, scratch)
+        n = walls_near(fat, walls, k, box, boxes, scratch)
+        if n < 0:
+            n = look_up_walls(grid, fat, walls, k, box, seen, scratch, scratch)
         if n == 0:
             continue
         found = _append(found, total, scratch, n)
@@ -360,9 +431,9 @@ def _warm() -> None:
     grid.query((0.2, 0.2, 0.6, 0.6))
     state = np.zeros((1, len(COLUMNS)))
     state[0, INV_MASS] = 1.0
-    bodies_near(state, np.zeros(1, dtype=np.int64), np.ones(1), 0.01, *grid.arrays, np.zeros(3, dtype=np.bool_),
-                np.empty(3, dtype=np.int64), np.empty(1, dtype=np.int64), np.empty(2, dtype=np.int64),
-                np.empty(1, dtype=np.int64))
+    bodies_near(state, np.zeros(1, dtype=np.int64), np.ones(1), 0.01, grid.arrays, FatBoxes().of(state, len(grid)),
+                np.zeros(3, dtype=np.bool_), np.empty(3, dtype=np.int64), np.empty(1, dtype=np.int64),
+                np.empty(2, dtype=np.int64), np.empty(1, dtype=np.int64))
     box_pairs(boxes, np.ones(3, dtype=np.bool_))
     by_entity(np.array([[1, 0]], dtype=np.int64), np.array([5, 3], dtype=np.int64))
     for meet in (True, False):

@@ -19,7 +19,7 @@ import numpy as np
 
 from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, COLUMNS, INV_MASS, SPIN, VX, VY, X0, Y0, X, Y
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
-from polygolf.engine.physics.grid import BoxGrid, overlapping
+from polygolf.engine.physics.grid import BoxGrid, FatBoxes, look_up_walls, walls_near
 from polygolf.engine.physics.jit import kernel, warm_up
 from polygolf.engine.physics.settings import GAP_TOLERANCE
 
@@ -189,11 +189,13 @@ def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reac
 @kernel
 def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
                     state: np.ndarray, rows: np.ndarray, radius: np.ndarray, least: float, grid: tuple,
-                    seen: np.ndarray, found: np.ndarray, wv: np.ndarray, wn: np.ndarray, wfirst: np.ndarray,
-                    target: float, tolerance: float, allowance: float, out: np.ndarray) -> tuple[float, int]:
+                    fat_boxes: tuple, seen: np.ndarray, found: np.ndarray, wv: np.ndarray, wn: np.ndarray,
+                    wfirst: np.ndarray, target: float, tolerance: float, allowance: float, out: np.ndarray
+                    ) -> tuple[float, int]:
     """For each body q of `rows` (a `body.BodyStore` state, from its pose at the substep's start to
     its pose now; shape q of a `ShapeTable`, bounding radius radius[q]), the earliest impact of any
-    of its pieces with the wall pieces its swept box meets in `grid` (the walls' `BoxGrid.arrays`),
+    of its pieces with the wall pieces its swept box meets in `grid` (the walls' `BoxGrid.arrays`,
+    asked through the bodies' `grid.FatBoxes.arrays`),
     as a fraction of its motion; 1.0 if none, or if it is at rest, kinematic, or stepped less than
     `least` (the discrete contact handles small steps), into `out` (the caller's, kept between
     substeps). Returns the longest step of an awake body, and how many bodies hit.
@@ -203,6 +205,8 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
     hits = 0
     box = np.empty(4)
     work = toi_work(max(widest(first), widest(wfirst)))
+    fat, walls = fat_boxes
+    boxes = grid[0]
     start, end = work[4][0], work[4][1]
     for q in range(len(rows)):
         k = rows[q]
@@ -216,7 +220,9 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
             continue
         r = radius[q] + target
         box[0], box[1], box[2], box[3] = min(x0, x1) - r, min(y0, y1) - r, max(x0, x1) + r, max(y0, y1) + r
-        count = overlapping(*grid, box, seen, found)
+        count = walls_near(fat, walls, k, box, boxes, found)
+        if count < 0:
+            count = look_up_walls(grid, fat, walls, k, box, seen, found, found)
         if count == 0:
             continue
         start[0], start[1], start[2] = x0, y0, a0
@@ -434,8 +440,8 @@ def _warm() -> None:
     state[1, X], state[1, ANGLE] = 2.0, 0.5
     first_wall_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                     table.body_first, state, np.array([0, 1], dtype=np.int64), np.full(2, 0.71), 0.005, grid.arrays,
-                    np.zeros(1, dtype=np.bool_), np.empty(1, dtype=np.int64), wall.verts, wall.normals, wall.first,
-                    0.005, 0.001, 0.005, np.empty(2))
+                    FatBoxes().of(state, 1), np.zeros(1, dtype=np.bool_), np.empty(1, dtype=np.int64), wall.verts,
+                    wall.normals, wall.first, 0.005, 0.001, 0.005, np.empty(2))
     first_pair_hit(*args, start, end, *args, still, still, 0.005, 0.001, 0.005, toi_work(4))
     body_pair_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                    table.body_first, np.array([[0, 1]], dtype=np.int64), state, np.array([0, 1], dtype=np.int64),

@@ -20,7 +20,7 @@ class BroadphaseProcessor(esper.Processor):
 
     def __init__(self, res: Resources) -> None:
         self.statics, self.candidates, self.config = res.statics, res.candidates, res.config
-        self.shapes, self.bodies = res.shapes, res.bodies
+        self.shapes, self.bodies, self.fat_boxes = res.shapes, res.bodies, res.fat_boxes
         walls = len(res.statics.grid)  # the grid query's scratch, and the answer's arrays, kept between substeps
         self._seen, self._scratch = np.zeros(walls, dtype=np.bool_), np.empty(walls, dtype=np.int64)
         self._near, self._first = np.empty(0, dtype=np.int64), np.empty(1, dtype=np.int64)
@@ -32,9 +32,9 @@ class BroadphaseProcessor(esper.Processor):
         ents = self.shapes.ents
         if len(self._near) != len(rows):
             self._near, self._first = np.empty(len(rows), dtype=np.int64), np.empty(len(rows) + 1, dtype=np.int64)
-        self._found, count = bodies_near(state, rows, self.shapes.radius, CONTACT_MARGIN,
-                                         *self.statics.grid.arrays, self._seen, self._scratch, self._near, self._first,
-                                         self._found)
+        self._found, count = bodies_near(state, rows, self.shapes.radius, CONTACT_MARGIN, self.statics.grid.arrays,
+                                         self.fat_boxes.of(state, len(self._seen)), self._seen, self._scratch,
+                                         self._near, self._first, self._found)
         candidates = self.candidates
         if count:
             candidates.near = ents[self._near[:count]]

@@ -31,7 +31,7 @@ class CCDProcessor(esper.Processor):
         self.statics, self.stats, self.config = res.statics, res.stats, res.config
         walls = len(res.statics.grid)
         self._seen, self._found = np.zeros(walls, dtype=np.bool_), np.empty(walls, dtype=np.int64)
-        self.shapes, self.bodies = res.shapes, res.bodies
+        self.shapes, self.bodies, self.fat_boxes = res.shapes, res.bodies, res.fat_boxes
         self._hits = np.empty(0)  # each body's time of impact this substep, kept between substeps
 
     def process(self) -> None:
@@ -43,7 +43,8 @@ class CCDProcessor(esper.Processor):
         hits = self._hits
         longest, count = first_wall_hits(
             table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
-            state, rows, self.shapes.radius, LINEAR_SLOP, self.statics.grid.arrays, self._seen, self._found,
+            state, rows, self.shapes.radius, LINEAR_SLOP, self.statics.grid.arrays,
+            self.fat_boxes.of(state, len(self._seen)), self._seen, self._found,
             walls.verts, walls.normals, walls.first, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP, hits)
         # No pair can need sweeping while no body steps half the linear slop.
         if len(bodies) > 1 and longest >= 0.5 * LINEAR_SLOP:

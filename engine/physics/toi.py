@@ -25,6 +25,7 @@ from polygolf.engine.physics.settings import GAP_TOLERANCE
 
 MAX_ITERATIONS = 24
 NO_HIT = 2.0  # any fraction >= 1: the motion ends before an impact
+_CLEARANCE = 1e-6  # m: beyond rounding, for the bounding circle's quick answer
 
 
 @kernel
@@ -159,9 +160,16 @@ def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float,
         return NO_HIT
     # Per unit of t, wall face k can approach no faster than this; the piece's own faces turn with
     # it, so only the general bound holds for them.
+    # A wall face beyond which the piece's bounding circle (radius `reach` about the body's origin)
+    # stays, farther than `target` and the tolerance, however fast it approaches that face: no
+    # impact, as the first advancement step would find (its step along that face's axis passes 1).
     rates = work[2]
+    clear = target + tolerance + _CLEARANCE
     for k in range(we - ws):
         rates[k] = max(0.0, -(dx * wn[ws + k, 0] + dy * wn[ws + k, 1])) + turn
+        if (start[0] - wv[ws + k, 0]) * wn[ws + k, 0] + (start[1] - wv[ws + k, 1]) * wn[ws + k, 1] - reach \
+                - rates[k] > clear:
+            return NO_HIT
     for k in range(we - ws, we - ws + e - s):
         rates[k] = general_rate
     return _advance(lv, ln, s, e, start, end, wv, wn, ws, we, _NOWHERE, _NOWHERE, True, rates, target, tolerance,

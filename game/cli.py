@@ -433,11 +433,15 @@ def _bench_accuracy(args: argparse.Namespace) -> int:
         settings = accuracy.sweep_settings(substeps=(1, 4, 16), iterations=(1, 8, 20))
     else:
         settings = accuracy.sweep_settings()
-    rows = accuracy.measure(settings, repeats=args.repeats, workers=args.workers, quick=args.quick,
+    workers = args.workers or os.cpu_count() or 1
+    started = time.perf_counter()
+    rows = accuracy.measure(settings, repeats=args.repeats, workers=workers, quick=args.quick,
                             progress=not args.no_progress)
     effects = accuracy.effect_costs()
+    minutes, seconds = divmod(round(time.perf_counter() - started), 60)
     command = "polygolf bench accuracy" + (" --quick" if args.quick else "") + f" --repeats {args.repeats}"
-    paths = accuracy.write_report(rows, cases, Path(args.out), effects, command)
+    took = (f"{minutes} min " if minutes else "") + f"{seconds} s with {workers} process{'es' if workers > 1 else ''}"
+    paths = accuracy.write_report(rows, cases, Path(args.out), effects, command, took)
     for row in sorted((r for r in rows if r.preset), key=lambda r: r.cost_us):
         print(f"{row.preset:<9} {row.label:<18} error {row.error:.4f}  {row.cost_us / 1000:7.1f} ms per simulated s"
               f"  {'on' if row.on_front else 'OFF'} the front")
@@ -558,7 +562,7 @@ def build_parser() -> argparse.ArgumentParser:
     acc.add_argument("--out", default="docs", help="folder for accuracy.md, .csv and .png (default docs)")
     acc.add_argument("--repeats", type=int, default=3, help="timed runs per setting (median; default 3)")
     acc.add_argument("--quick", action="store_true", help="a coarse grid and five cases (about a minute)")
-    acc.add_argument("--workers", type=int, default=2, help="processes, one a core (default 2)")
+    acc.add_argument("--workers", type=jobs_arg, default=None, help="processes (default: one a core)")
     acc.add_argument("--no-progress", action="store_true", help="no progress bar")
     acc.set_defaults(run=_bench_accuracy)
 

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import csv
 import math
+import os
 import statistics
 from collections.abc import Callable, Iterable
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -317,11 +318,12 @@ def all_cases(quick: bool = False) -> list[Case]:
     return cases
 
 
-def measure(settings: list[Knobs], repeats: int = 3, workers: int = 2, quick: bool = False,
+def measure(settings: list[Knobs], repeats: int = 3, workers: int | None = None, quick: bool = False,
             progress: bool = True) -> list[Row]:
     """Error and cost of every setting. Settings are spread over `workers` processes (one a core);
     each setting's runs, timed ones included, stay in one process."""
     rows = []
+    workers = max(1, min(workers or os.cpu_count() or 1, len(settings)))
     with ProcessPoolExecutor(max_workers=workers, initializer=_prepare, initargs=(quick,)) as pool:
         futures = [pool.submit(_measure_one, knobs, repeats) for knobs in settings]
         done = as_completed(futures)
@@ -378,7 +380,7 @@ def effect_costs(frames: int = 600) -> dict[str, float]:
 # --- the report -----------------------------------------------------------------------------------
 
 def write_report(rows: list[Row], cases: list[Case], out: Path, effects: dict[str, float] | None = None,
-                 command: str = "polygolf bench accuracy") -> dict[str, Path]:
+                 command: str = "polygolf bench accuracy", took: str = "") -> dict[str, Path]:
     out.mkdir(parents=True, exist_ok=True)
     paths = {"csv": out / "accuracy.csv", "md": out / "accuracy.md", "png": out / "accuracy.png"}
     names = [c.name for c in cases]
@@ -392,7 +394,7 @@ def write_report(rows: list[Row], cases: list[Case], out: Path, effects: dict[st
                              f"{r.error:.6f}", f"{r.cost_us:.0f}", int(r.on_front), r.preset,
                              *(f"{r.errors[n]:.6f}" for n in names)])
     _plot(rows, paths["png"])
-    paths["md"].write_text(_markdown(rows, cases, effects, command))
+    paths["md"].write_text(_markdown(rows, cases, effects, command, took))
     return paths
 
 
@@ -432,14 +434,16 @@ def _plot(rows: list[Row], path: Path) -> None:
     plt.close(fig)
 
 
-def _markdown(rows: list[Row], cases: list[Case], effects: dict[str, float] | None, command: str) -> str:
+def _markdown(rows: list[Row], cases: list[Case], effects: dict[str, float] | None, command: str,
+              took: str = "") -> str:
     names = [c.name for c in cases]
     front = sorted((r for r in rows if r.on_front), key=lambda r: r.cost_us)
     presets = sorted((r for r in rows if r.preset), key=lambda r: r.cost_us)
     lines = [
         "# Accuracy against time",
         "",
-        f"Made by `{command}` ({len(rows)} settings, {len(cases)} cases). Cost is the median wall time per",
+        f"Made by `{command}` ({len(rows)} settings, {len(cases)} cases{', ' + took if took else ''}). Cost is "
+        "the median wall time per",
         "simulated second of all cases together; error is the mean of the cases' errors, each in [0, 1]",
         "(relative error against a closed form; otherwise against a reference run at "
         f"{REFERENCE.substeps} substeps x {REFERENCE.iterations} iterations with NGS:",

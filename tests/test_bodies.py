@@ -154,7 +154,7 @@ def test_accelerate_skips_resting_and_kinematic_bodies():
     state = rows(3)
     state[1, ASLEEP] = 1.0
     state[2, INV_MASS] = 0.0
-    motion.accelerate(state, np.arange(3, dtype=np.int64), np.full(3, 2.0), np.full(3, -1.0), 0.5)
+    motion.accelerate(state, np.arange(3, dtype=np.int64), np.array([[2.0, -1.0]]), np.zeros(3, dtype=np.int64), 0.5)
     assert state[:, VX].tolist() == [1.0, 0.0, 0.0] and state[:, VY].tolist() == [-0.5, 0.0, 0.0]
 
 

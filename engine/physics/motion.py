@@ -84,13 +84,23 @@ def turn(state: np.ndarray, dt: float) -> None:
 
 
 @kernel
-def accelerate(state: np.ndarray, rows: np.ndarray, ax: np.ndarray, ay: np.ndarray, dt: float) -> None:
-    """v += a·dt for each awake dynamic body of `rows`, with that row's acceleration."""
+def accelerate(state: np.ndarray, rows: np.ndarray, pushes: np.ndarray, which: np.ndarray, dt: float) -> None:
+    """v += a·dt for each awake dynamic body of `rows`, with a = pushes[which[q]] (x, y), or none
+    where which[q] < 0: gravity (one push for every body), the slope each ball is on."""
     for q in range(rows.shape[0]):
-        k = rows[q]
-        if state[k, INV_MASS] > 0.0 and state[k, ASLEEP] == 0.0:
-            state[k, VX] += ax[q] * dt
-            state[k, VY] += ay[q] * dt
+        k, p = rows[q], which[q]
+        if p >= 0 and state[k, INV_MASS] > 0.0 and state[k, ASLEEP] == 0.0:
+            state[k, VX] += pushes[p, 0] * dt
+            state[k, VY] += pushes[p, 1] * dt
+
+
+@kernel
+def take_scale(state: np.ndarray, rows: np.ndarray, scales: np.ndarray, which: np.ndarray) -> None:
+    """The drag scale of each body of `rows` is scales[which[q]] (the surface it is on), where
+    which[q] >= 0."""
+    for q in range(rows.shape[0]):
+        if which[q] >= 0:
+            state[rows[q], DRAG_SCALE] = scales[which[q]]
 
 
 @kernel
@@ -225,7 +235,8 @@ def _warm() -> None:
     rows = np.arange(2, dtype=np.int64)
     advance(state, np.ones(2, dtype=np.bool_), 0.01, 0.001, 0.001, 0.1, 0.25)
     turn(state, 0.01)
-    accelerate(state, rows, np.ones(2), np.zeros(2), 0.01)
+    accelerate(state, rows, np.array([[1.0, 0.0]]), np.zeros(2, dtype=np.int64), 0.01)
+    take_scale(state, rows, np.array([0.5]), np.array([0, -1], dtype=np.int64))
     drag(state, rows, np.array([[0.1, 0.1, 0.5, 0.5], [0.0, 0.0, 0.5, 0.5]]), 0.01)
     captured(state, rows, np.array([[0.0, 0.0, 1.0, 2.0]]), np.empty(2, dtype=np.int64))
     kinetic_energy(state)

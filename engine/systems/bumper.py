@@ -23,8 +23,11 @@ class BumperProcessor(esper.Processor):
     def process(self) -> None:
         dt = self.config.dt
         for _, bumper in esper.get_component(Bumper):
-            bumper.lit = max(0.0, bumper.lit - dt)
+            if bumper.lit:
+                bumper.lit = max(0.0, bumper.lit - dt)
         table = self.contacts.table
+        if not len(table):
+            return
         points = table.points
         struck = points[:, P_APPROACH] < -RESTITUTION_THRESHOLD
         if not struck.any():

@@ -14,13 +14,14 @@ class GravityProcessor(esper.Processor):
 
     def __init__(self, res: Resources) -> None:
         self.config, self.bodies = res.config, res.bodies
-        self._every = (np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0))  # rows, gx, gy for a world's size
+        self._every = (np.zeros(0, dtype=np.int64), np.zeros((1, 2)), np.zeros(0, dtype=np.int64))  # rows, push, which
 
     def process(self) -> None:
         state = self.bodies.gather(esper.get_component(Body))
-        rows, ax, ay = self._every
+        rows, push, which = self._every
         gx, gy = self.config.gravity
-        if len(rows) != len(state) or (len(rows) and (ax[0] != gx or ay[0] != gy)):
+        if len(rows) != len(state) or push[0, 0] != gx or push[0, 1] != gy:
             n = len(state)
-            rows, ax, ay = self._every = np.arange(n, dtype=np.int64), np.full(n, float(gx)), np.full(n, float(gy))
-        accelerate(state, rows, ax, ay, self.config.dt)
+            self._every = rows, push, which = (np.arange(n, dtype=np.int64), np.array([[gx, gy]], dtype=np.float64),
+                                               np.zeros(n, dtype=np.int64))
+        accelerate(state, rows, push, which, self.config.dt)

@@ -23,6 +23,4 @@ class SlopeProcessor(esper.Processor):
         zones = esper.get_components(Region, Slope)
         on = self._slopes.under(state, rows, zones)
         if on is not None:
-            pushed = on >= 0
-            push = self._slopes.values[on[pushed]]
-            accelerate(state, rows[pushed], push[:, 0].copy(), push[:, 1].copy(), self.config.dt)
+            accelerate(state, rows, self._slopes.values, on, self.config.dt)

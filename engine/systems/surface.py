@@ -2,7 +2,8 @@ import esper
 
 from polygolf.engine.components import Ball, Body, Drag, Region
 from polygolf.engine.components.resources import Resources
-from polygolf.engine.physics.body import DRAG_SCALE, Selection
+from polygolf.engine.physics.body import Selection
+from polygolf.engine.physics.motion import take_scale
 from polygolf.engine.systems.areas import AreaIndex
 
 
@@ -23,5 +24,4 @@ class SurfaceProcessor(esper.Processor):
         zones = esper.get_components(Region, self.marker)
         on = self._areas.under(state, rows, zones)
         if on is not None:
-            found = on >= 0
-            state[rows[found], DRAG_SCALE] = self._areas.values[on[found]]
+            take_scale(state, rows, self._areas.values, on)

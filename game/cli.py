@@ -435,9 +435,8 @@ def _bench_accuracy(args: argparse.Namespace) -> int:
         settings = accuracy.sweep_settings()
     workers = args.workers or os.cpu_count() or 1
     started = time.perf_counter()
-    rows = accuracy.measure(settings, repeats=args.repeats, workers=workers, quick=args.quick,
-                            progress=not args.no_progress)
-    effects = accuracy.effect_costs()
+    rows, effects = accuracy.sweep(settings, repeats=args.repeats, workers=workers, quick=args.quick,
+                                   progress=not args.no_progress)
     minutes, seconds = divmod(round(time.perf_counter() - started), 60)
     command = "polygolf bench accuracy" + (" --quick" if args.quick else "") + f" --repeats {args.repeats}"
     took = (f"{minutes} min " if minutes else "") + f"{seconds} s with {workers} process{'es' if workers > 1 else ''}"

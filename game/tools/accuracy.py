@@ -320,12 +320,22 @@ def all_cases(quick: bool = False) -> list[Case]:
 
 def measure(settings: list[Knobs], repeats: int = 3, workers: int | None = None, quick: bool = False,
             progress: bool = True) -> list[Row]:
-    """Error and cost of every setting. Settings are spread over `workers` processes (one a core);
-    each setting's runs, timed ones included, stay in one process."""
+    """Error and cost of every setting (`sweep` without the systems' costs)."""
+    return sweep(settings, repeats, workers, quick, progress, effects=False)[0]
+
+
+def sweep(settings: list[Knobs], repeats: int = 3, workers: int | None = None, quick: bool = False,
+          progress: bool = True, effects: bool = True) -> tuple[list[Row], dict[str, float]]:
+    """Error and cost of every setting, and with `effects` each system's cost (`effect_costs`).
+    Settings are spread over `workers` processes (one a core), the costliest first so that no
+    process is left with a long one at the end; each setting's runs, timed ones included, stay in
+    one process. The systems' costs are measured in the pool too, alongside the settings."""
     rows = []
     workers = max(1, min(workers or os.cpu_count() or 1, len(settings)))
     with ProcessPoolExecutor(max_workers=workers, initializer=_prepare, initargs=(quick,)) as pool:
-        futures = [pool.submit(_measure_one, knobs, repeats) for knobs in settings]
+        systems = pool.submit(effect_costs) if effects else None
+        costliest_first = sorted(settings, key=lambda k: -k.substeps * (k.iterations + k.position_iterations + 4))
+        futures = [pool.submit(_measure_one, knobs, repeats) for knobs in costliest_first]
         done = as_completed(futures)
         if progress:
             from tqdm import tqdm
@@ -334,12 +344,13 @@ def measure(settings: list[Knobs], repeats: int = 3, workers: int | None = None,
         for future in done:
             knobs, errors, cost = future.result()
             rows.append(Row(knobs, statistics.fmean(errors.values()), cost, errors))
+        costs = systems.result() if systems is not None else {}
     mark_front(rows)
     for name, knobs in PRESETS.items():
         for row in rows:
             if row.knobs == knobs:
                 row.preset = name
-    return rows
+    return rows, costs
 
 
 def mark_front(rows: list[Row]) -> None:

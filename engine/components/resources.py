@@ -86,13 +86,13 @@ class Shapes:
     thickness: np.ndarray = field(default_factory=lambda: np.zeros(0))
     materials: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))  # restitution, friction
     _selection: Selection = field(default_factory=Selection)
-    _lookup: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+    lookup: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))  # entity -> row (-1: none)
     _everyone: list | None = None  # esper's list of bodies when `current` last answered
     _current: tuple = ()
 
     def index(self, ents: np.ndarray) -> np.ndarray:
         """The rows (as `of` gives them) of these entities, each of which has a body and a collider."""
-        return self._lookup[ents]
+        return self.lookup[ents]
 
     def of(self, bodies: list) -> tuple[ShapeTable, dict[int, int]]:
         """The table for `esper.get_components(Body, Collider)`, and each entity's row in it."""
@@ -104,8 +104,8 @@ class Shapes:
             self.thickness = np.array([col.thickness for _, (_, col) in bodies], dtype=np.float64)
             self.materials = np.array([(col.material.restitution, col.material.friction) for _, (_, col) in bodies],
                                       dtype=np.float64).reshape(-1, 2)
-            self._lookup = np.full(int(self.ents.max(initial=-1)) + 1, -1, dtype=np.int64)
-            self._lookup[self.ents] = np.arange(len(self.ents))
+            self.lookup = np.full(int(self.ents.max(initial=-1)) + 1, -1, dtype=np.int64)
+            self.lookup[self.ents] = np.arange(len(self.ents))
             self._bodies = bodies
         return self._table, self._rows
 

@@ -40,9 +40,15 @@ from polygolf.engine.physics.collide import (
     SEP,
     X,
     Y,
+    bodies_pair_contacts,
+    bodies_wall_contacts,
+    kept_pairs,
 )
+from polygolf.engine.physics.geometry import ConvexSet, ShapeTable
 from polygolf.engine.physics.jit import kernel, warm_up
+from polygolf.engine.physics.motion import wake_pairs
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
+from polygolf.engine.physics.toi import pairs_apart
 
 # Normals closer than this (cosine) are the same contact plane.
 SAME_NORMAL_COS = math.cos(math.radians(2.0))
@@ -444,6 +450,78 @@ def carry_impulses(old_ents: np.ndarray, old_first: np.ndarray, old_keys: np.nda
     return carried
 
 
+@kernel
+def find_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
+                  state: np.ndarray, store_rows: np.ndarray, radius: np.ndarray, materials: np.ndarray,
+                  ents: np.ndarray, lookup: np.ndarray, pair_ents: np.ndarray, near_ents: np.ndarray,
+                  near_first: np.ndarray, near_found: np.ndarray, walls: tuple, wall_materials: np.ndarray,
+                  wall_owner: np.ndarray, wall_index: np.ndarray, static: np.ndarray, dt: float, margin: float,
+                  ngs: bool, deepest: float, old_ents: np.ndarray, old_first: np.ndarray, old_keys: np.ndarray,
+                  old_points: np.ndarray, warm: bool, threshold: float
+                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, float]:
+    """The narrowphase in one call: this substep's contact table (`build_contacts`, columns as it
+    gives them, and the deepest overlap) for the broadphase's candidates, warm-started from the
+    last one's (`carry_impulses`, with `warm`). Bodies are shapes of a `geometry.ShapeTable` (lv ..
+    body_first) at rows `store_rows` of a `body.BodyStore` state, with bounding radii, materials and
+    entities; `lookup[entity]` is its shape. Candidates: body pairs (entities), and the bodies with
+    wall pieces near (entities, their pieces in compressed rows). `walls` is the static world's
+    `arrays`, `static` its stand-in body's row.
+
+    Pairs first (their rows go after the walls', as always): a body another one presses on this
+    substep can be pushed into a wall it is not moving towards yet, so its wall gaps must stay
+    contacts. A contact with a gap acts only if the bodies, moving on as they are, would close it
+    within the substep (`collide.wall_contacts`, `toi.pairs_apart`)."""
+    n = len(store_rows)
+    pressed = np.zeros(n, dtype=np.bool_)
+    pairs = np.zeros((0, 2), dtype=np.int64)
+    pair_rows, pair_first, gaps = np.zeros((0, ROW)), np.zeros(1, dtype=np.int64), np.zeros(0)
+    if len(pair_ents):
+        shapes = np.empty((len(pair_ents), 2), dtype=np.int64)
+        for g in range(len(pair_ents)):
+            shapes[g, 0], shapes[g, 1] = lookup[pair_ents[g, 0]], lookup[pair_ents[g, 1]]
+        poses = np.empty((n, 3))
+        for q in range(n):
+            poses[q, 0], poses[q, 1], poses[q, 2] = state[store_rows[q], B_X], state[store_rows[q], B_Y], \
+                state[store_rows[q], B_ANGLE]
+        pair_rows, pair_first, pairs, gaps = bodies_pair_contacts(lv, ln, first, body_first, shapes, poses, radius,
+                                                                  margin)
+    apart = np.zeros(len(pairs), dtype=np.bool_)
+    if len(pairs):
+        pairs_apart(lv, ln, first, reach, body_first, pairs, gaps, state, store_rows, radius, lookup[near_ents], dt,
+                    apart, pressed)
+
+    # The contact rows against walls (body by body), then between bodies (pair by pair).
+    wall_rows, near_rows, near_materials = np.zeros((0, ROW)), np.zeros(0, dtype=np.int64), np.zeros((0, 2))
+    if len(near_ents):
+        near = lookup[near_ents]
+        near_rows = store_rows[near]
+        near_materials = materials[near]
+        held = pressed[near]
+        moving = np.empty((len(near), 6))
+        for q in range(len(near)):
+            for c in range(6):
+                moving[q, c] = state[near_rows[q], B_X + c]
+        wall_rows = bodies_wall_contacts(lv, ln, first, reach, body_first, near, moving, held, near_first, near_found,
+                                         walls, dt, margin)
+    kept_rows, kept_first = np.zeros((0, ROW)), np.zeros(1, dtype=np.int64)
+    kept_ents, kept_bodies, kept_materials = np.zeros((0, 2), dtype=np.int64), np.zeros((0, 2), dtype=np.int64), \
+        np.zeros((0, 4))
+    if len(pairs):  # as for walls: bodies that will not meet do not touch
+        kept_rows, kept_first, kept_ents, kept_bodies, kept_materials = kept_pairs(
+            pair_rows, pair_first, pairs, apart, ents, store_rows, materials)
+        if len(kept_ents):
+            wake_pairs(state, kept_bodies)
+    if not len(wall_rows) and not len(kept_ents):
+        return (np.zeros((0, 2), dtype=np.int64), np.zeros((0, 2), dtype=np.int64), np.zeros((0, MANIFOLD_COLUMNS)),
+                np.zeros(1, dtype=np.int64), np.zeros((0, POINT_COLUMNS)), np.zeros((0, KEY_COLUMNS), dtype=np.int64),
+                deepest)
+    table = build_contacts(wall_rows, near_ents, near_rows, near_materials, wall_materials, wall_owner, wall_index,
+                           kept_rows, kept_first, kept_ents, kept_bodies, kept_materials, state, static, ngs, deepest)
+    if warm and len(old_ents):
+        carry_impulses(old_ents, old_first, old_keys, old_points, table[0], table[3], table[5], table[4], threshold)
+    return table
+
+
 @warm_up("contact table")
 def _warm() -> None:
     state = np.zeros((2, len(COLUMNS)))
@@ -462,3 +540,23 @@ def _warm() -> None:
             np.full((1, 4), 0.5), state, np.zeros(len(COLUMNS)), ngs, 0.0)
         points[:, P_NORMAL_IMPULSE] = 1.0
         carry_impulses(ents, first, keys, points, ents, first, keys, points.copy(), RESTITUTION_THRESHOLD)
+    # Two squares, one on the other, the lower one on a floor: pairs, walls and a warm start.
+    square = ((0.5, -0.5), (0.5, 0.5), (-0.5, 0.5), (-0.5, -0.5))
+    normals = ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))
+    table = ShapeTable.of([ConvexSet.of([square], [normals])] * 2)
+    floor = ConvexSet.of([((-5.0, -1.0), (5.0, -1.0), (5.0, 0.0), (-5.0, 0.0))], [normals[3:] + normals[:3]])
+    walls = (floor.verts, floor.normals, floor.first, np.zeros(4, dtype=np.bool_), np.zeros(4, dtype=np.bool_))
+    state[:, B_Y] = 0.499, 1.498
+    state[:, COLUMNS.index("inv_mass")] = state[:, COLUMNS.index("mass")] = 1.0
+    ents = np.array([3, 4], dtype=np.int64)
+    lookup = np.array([-1, -1, -1, 0, 1], dtype=np.int64)
+    last = (np.zeros((0, 2), dtype=np.int64), np.zeros(1, dtype=np.int64), np.zeros((0, KEY_COLUMNS), dtype=np.int64),
+            np.zeros((0, POINT_COLUMNS)))
+    for _ in range(2):
+        found = find_contacts(
+            table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first, state,
+            np.arange(2, dtype=np.int64), np.full(2, 0.71), np.ones((2, 2)), ents, lookup,
+            np.array([[3, 4]], dtype=np.int64), ents[:1], np.array([0, 1], dtype=np.int64), np.zeros(1, dtype=np.int64),
+            walls, np.ones((1, 2)), np.zeros(1, dtype=np.int64), np.zeros(1, dtype=np.int64), np.zeros(len(COLUMNS)),
+            1.0 / 240.0, 0.01, False, 0.0, *last, True, RESTITUTION_THRESHOLD)
+        last = (found[0], found[3], found[5], found[4])

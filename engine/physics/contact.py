@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from polygolf.engine.physics.body import ANGLE as B_ANGLE
-from polygolf.engine.physics.body import COLUMNS, PUSH_SPIN, PUSH_X, SOLVER_COLUMNS, SPIN, Body, BodyStore
+from polygolf.engine.physics.body import COLUMNS, Body, BodyStore
 from polygolf.engine.physics.body import X as B_X
 from polygolf.engine.physics.body import Y as B_Y
 from polygolf.engine.physics.collide import (
@@ -140,7 +140,7 @@ def _point_of(row: list[float], key: tuple) -> ContactPoint:
 class ContactTable:
     """One substep's manifolds and their points. Manifold k: entities `ents[k]` (A, B; B = -1 for
     the static world), body rows `pair[k]` (rows of `store.state`; the static world is the row after
-    the store's, `len(store.state)`, as in `packed_bodies`), `normals[k]` (M_ columns), `block[k]`
+    the store's, `len(store.state)`), `normals[k]` (M_ columns), `block[k]`
     (solved as a block: written by the solver), its points rows first[k]:first[k + 1] of `points`
     (P_ columns) and `keys` (K_ columns)."""
 
@@ -162,21 +162,6 @@ class ContactTable:
 
     def __len__(self) -> int:
         return len(self.pair)
-
-    def packed_bodies(self) -> np.ndarray:
-        """The solver's body rows (`SOLVER_COLUMNS`): a copy of the store's, then the static world's."""
-        state = self.store.state
-        bodies = np.empty((len(state) + 1, SOLVER_COLUMNS))
-        bodies[:-1] = state[:, :SOLVER_COLUMNS]
-        bodies[-1] = self.static._row[:SOLVER_COLUMNS]
-        return bodies
-
-    def write_back(self, bodies: np.ndarray) -> None:
-        """Pose, velocity and pseudo-velocity from `packed_bodies` rows back to the bodies; mass
-        properties stay."""
-        for row, target in ((bodies[:-1], self.store.state), (bodies[-1], self.static._row)):
-            target[..., B_X:SPIN + 1] = row[..., B_X:SPIN + 1]
-            target[..., PUSH_X:PUSH_SPIN + 1] = row[..., PUSH_X:PUSH_SPIN + 1]
 
     def body(self, row: int) -> Body:
         return self.static if row == len(self.store.state) else self.store.handle(row)

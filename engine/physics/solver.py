@@ -614,12 +614,34 @@ def solve(table: ContactTable, knobs: Knobs, dt: float, friction: bool) -> int:
     and pseudo-velocity). Returns how many islands threw their warm start away for a cold solve."""
     if not len(table):
         return 0
-    bodies = table.packed_bodies()
-    cold_restarts = solve_contacts(
-        bodies, table.normals, table.pair, table.first, table.block, table.points, bool(knobs.warm_start),
-        int(knobs.iterations), int(knobs.position_iterations), _CORRECTIONS[knobs.position_correction], float(dt),
-        bool(friction), POSITION_BETA, LINEAR_SLOP, MAX_CORRECTION, BLOCK_MAX_CONDITION)
-    table.write_back(bodies)
+    return _solve_bodies(table.store.state, table.static._row, table.normals, table.pair, table.first, table.block,
+                         table.points, bool(knobs.warm_start), int(knobs.iterations), int(knobs.position_iterations),
+                         _CORRECTIONS[knobs.position_correction], float(dt), bool(friction), POSITION_BETA, LINEAR_SLOP,
+                         MAX_CORRECTION, BLOCK_MAX_CONDITION)
+
+
+@kernel
+def _solve_bodies(state: np.ndarray, static: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray,
+                  block: np.ndarray, points: np.ndarray, warm: bool, iterations: int, position_iterations: int,
+                  correction: int, dt: float, friction: bool, beta: float, slop: float, max_push: float,
+                  max_condition: float) -> int:
+    """`solve_contacts` on the solver's rows of a store's `state` and the static world's row (a table's
+    body rows: the static world is the row after the store's), copied in and their pose, velocity
+    and pseudo-velocity written back."""
+    n = state.shape[0]
+    bodies = np.empty((n + 1, body.SOLVER_COLUMNS))
+    for c in range(body.SOLVER_COLUMNS):
+        for k in range(n):
+            bodies[k, c] = state[k, c]
+        bodies[n, c] = static[c]
+    cold_restarts = solve_contacts(bodies, normals, pair, first, block, points, warm, iterations, position_iterations,
+                                   correction, dt, friction, beta, slop, max_push, max_condition)
+    for k in range(n + 1):
+        row = state[k] if k < n else static
+        for c in range(body.X, body.SPIN + 1):
+            row[c] = bodies[k, c]
+        for c in range(body.PUSH_X, body.PUSH_SPIN + 1):
+            row[c] = bodies[k, c]
     return cold_restarts
 
 

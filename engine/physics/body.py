@@ -142,12 +142,13 @@ class BodyStore:
     esper's list of bodies; gathered again only when that list changes (a body added or taken
     away). Handles of bodies that leave keep their last values in the array left behind."""
 
-    __slots__ = ("_bodies", "state", "rows")
+    __slots__ = ("_bodies", "state", "rows", "lookup")
 
     def __init__(self) -> None:
         self._bodies: list | None = None
         self.state = np.zeros((0, len(COLUMNS)))
         self.rows: dict[int, int] = {}  # entity -> row
+        self.lookup = np.zeros(0, dtype=np.int64)  # the same as an array (-1: no row), for kernels
 
     def gather(self, bodies: Sequence[tuple[int, Body]]) -> np.ndarray:
         """The state array for `esper.get_component(Body)`, rows in that list's order."""
@@ -156,6 +157,9 @@ class BodyStore:
             for k, (_, body) in enumerate(bodies):
                 body._point(state[k])
             self.state, self.rows, self._bodies = state, {ent: k for k, (ent, _) in enumerate(bodies)}, bodies
+            ents = np.array([ent for ent, _ in bodies], dtype=np.int64)
+            self.lookup = np.full(int(ents.max(initial=-1)) + 1, -1, dtype=np.int64)
+            self.lookup[ents] = np.arange(len(ents))
         return self.state
 
     def handle(self, row: int) -> Body:

@@ -212,6 +212,17 @@ def wake_pairs(state: np.ndarray, pairs: np.ndarray) -> None:
 
 
 @kernel
+def mark_touching(settles: np.ndarray, ents: np.ndarray, lookup: np.ndarray) -> None:
+    """settles[lookup[entity]] = True for every entity of a contact table's pairs (`ents`) that has a
+    row (the static world, -1, has none)."""
+    for g in range(ents.shape[0]):
+        for side in range(2):
+            ent = ents[g, side]
+            if 0 <= ent < len(lookup) and lookup[ent] >= 0:
+                settles[lookup[ent]] = True
+
+
+@kernel
 def came_to_rest(state: np.ndarray, rows: np.ndarray, was_asleep: np.ndarray, out: np.ndarray) -> int:
     """The bodies of `rows` (indices into it, into `out`) at rest now that were not when `was_asleep`
     was last updated (it is, here). Returns how many."""
@@ -243,3 +254,4 @@ def _warm() -> None:
     came_to_rest(state, rows, np.zeros(2, dtype=np.bool_), np.empty(2, dtype=np.int64))
     rewind(state, rows, np.array([0.5, 1.0]))
     wake_pairs(state, np.array([[0, 1]], dtype=np.int64))
+    mark_touching(np.zeros(2, dtype=np.bool_), np.array([[1, -1]], dtype=np.int64), np.array([-1, 0], dtype=np.int64))

@@ -681,11 +681,8 @@ def _restitution(state: np.ndarray, static: np.ndarray, normals: np.ndarray, pai
 def apply_restitution(table: ContactTable, threshold: float) -> int:
     """Poisson restitution: every point that was approaching faster than `threshold` gets e times
     its compression impulse again. Returns how many points bounced. Runs after `solve`, on the
-    bodies' rows themselves (most substeps have no impact, and then not even that)."""
-    points = table.points
-    if (points[:, P_APPROACH] >= -threshold).all():
-        return 0  # every point resting: nothing bounces
-    return _restitution(table.store.state, table.static._row, table.normals, table.pair, table.first, points,
+    bodies' rows themselves (a point resting is passed over in the kernel)."""
+    return _restitution(table.store.state, table.static._row, table.normals, table.pair, table.first, table.points,
                         threshold)
 
 

@@ -4,7 +4,7 @@ import numpy as np
 from polygolf.engine.components import Body, Drag
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.body import Selection
-from polygolf.engine.physics.motion import advance
+from polygolf.engine.physics.motion import advance, mark_touching
 from polygolf.engine.physics.settings import REST_ANGULAR, REST_LINEAR, REST_SPEED_CAP, TIME_TO_REST
 
 
@@ -40,11 +40,7 @@ class IntegrateProcessor(esper.Processor):
         table = self.contacts.table
         if len(table) or self._touched:
             settles[:] = self._dragged_mask
-            rows = self.bodies.rows
-            for ent in np.unique(table.ents).tolist():
-                row = rows.get(ent)
-                if row is not None:
-                    settles[row] = True
+            mark_touching(settles, table.ents, self.bodies.lookup)
             self._touched = len(table) > 0
         dt = self.config.dt
         advance(state, settles, dt, REST_LINEAR * dt, REST_ANGULAR * dt, REST_SPEED_CAP, TIME_TO_REST)

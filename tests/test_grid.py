@@ -39,16 +39,7 @@ def test_queries_and_pairs_match_brute_force(items, queries, cell, active):
     state[:, X] = [(q[0] + q[2]) / 2 for q in queries]
     state[:, Y] = [(q[1] + q[3]) / 2 for q in queries]
     radius = np.array([(q[2] - q[0]) / 2 for q in queries])
-    near, first = np.empty(len(queries), dtype=np.int64), np.empty(len(queries) + 1, dtype=np.int64)
-    found, count = bodies_near(state, np.arange(len(queries), dtype=np.int64), radius, 0.0, grid.arrays,
-                               FatBoxes().of(state, len(items)), np.zeros(len(items), dtype=np.bool_),
-                               np.empty(len(items), dtype=np.int64), near, first, np.empty(1, dtype=np.int64))
-    answers = {near[k]: found[first[k]:first[k + 1]].tolist() for k in range(count)}
-    for q in range(len(queries)):
-        x, y, r = state[q, X], state[q, Y], radius[q]
-        square = (x - r, y - r, x + r, y + r)
-        expected = [] if q == 1 else [i for i, box in enumerate(items) if _overlaps(square, box)]
-        assert answers.get(q, []) == expected
+    _check_bodies_near(items, grid, FatBoxes(), state, radius, 0.0, resting=1)
     active = np.array(active[:len(items)])
     expected = sorted((i, j) for i in range(len(items)) for j in range(i + 1, len(items))
                       if _overlaps(items[i], items[j]) and (active[i] or active[j]))
@@ -81,19 +72,26 @@ def test_walls_kept_in_fat_boxes_are_the_grids_answer_as_bodies_move(items, step
     state = np.zeros((3, len(COLUMNS)))
     state[:, INV_MASS] = 1.0
     radius = np.array([size, 0.5 * size, 2.0 * size])
-    walls = len(items)
-    near, first, found = np.empty(3, dtype=np.int64), np.empty(4, dtype=np.int64), np.empty(1, dtype=np.int64)
     for dx, dy in steps:
         state[:, X] += [dx, -dy, 0.5 * dx]
         state[:, Y] += [dy, dx, -0.5 * dy]
-        found, count = bodies_near(state, np.arange(3, dtype=np.int64), radius, 0.01, grid.arrays,
-                                   fat_boxes.of(state, walls), np.zeros(walls, dtype=np.bool_),
-                                   np.empty(walls, dtype=np.int64), near, first, found)
-        answers = {near[k]: found[first[k]:first[k + 1]].tolist() for k in range(count)}
-        for q in range(3):
-            r = radius[q] + 0.01
-            square = (state[q, X] - r, state[q, Y] - r, state[q, X] + r, state[q, Y] + r)
-            assert answers.get(q, []) == [i for i, box in enumerate(items) if _overlaps(square, box)]
+        _check_bodies_near(items, grid, fat_boxes, state, radius, 0.01)
+
+
+def _check_bodies_near(items: list, grid: BoxGrid, fat_boxes: FatBoxes, state: np.ndarray, radius: np.ndarray,
+                       margin: float, resting: int = -1) -> None:
+    """`bodies_near` for every row of `state` (row `resting` is at rest: not looked up) against brute force."""
+    n, walls = len(state), len(items)
+    near, first = np.empty(n, dtype=np.int64), np.empty(n + 1, dtype=np.int64)
+    found, count = bodies_near(state, np.arange(n, dtype=np.int64), radius, margin, grid.arrays,
+                               fat_boxes.of(state, walls), np.zeros(walls, dtype=np.bool_),
+                               np.empty(walls, dtype=np.int64), near, first, np.empty(1, dtype=np.int64))
+    answers = {near[k]: found[first[k]:first[k + 1]].tolist() for k in range(count)}
+    for q in range(n):
+        r = radius[q] + margin
+        square = (state[q, X] - r, state[q, Y] - r, state[q, X] + r, state[q, Y] + r)
+        expected = [] if q == resting else [i for i, box in enumerate(items) if _overlaps(square, box)]
+        assert answers.get(q, []) == expected
 
 
 def test_boxes_beyond_the_grid_and_not_numbers_are_answered_too():

@@ -109,11 +109,6 @@ class Shapes:
             self._bodies = bodies
         return self._table, self._rows
 
-    def rows(self, store: BodyStore, bodies: list) -> np.ndarray:
-        """Each body's row in the store (gathered for this substep), in the order of `bodies` (as `of`)."""
-        self.of(bodies)
-        return self._selection.of(store, bodies)
-
     def current(self, store: BodyStore, everyone: list, bodies: list) -> tuple[np.ndarray, ShapeTable, np.ndarray]:
         """The store's state gathered for `esper.get_component(Body)` (`everyone`), the shape table
         for `esper.get_components(Body, Collider)` (`bodies`) and each of those bodies' rows in the

@@ -40,10 +40,7 @@ def test_queries_and_pairs_match_brute_force(items, queries, cell, active):
     state[:, Y] = [(q[1] + q[3]) / 2 for q in queries]
     radius = np.array([(q[2] - q[0]) / 2 for q in queries])
     _check_bodies_near(items, grid, FatBoxes(), state, radius, 0.0, resting=1)
-    active = np.array(active[:len(items)])
-    expected = sorted((i, j) for i in range(len(items)) for j in range(i + 1, len(items))
-                      if _overlaps(items[i], items[j]) and (active[i] or active[j]))
-    assert [tuple(p) for p in box_pairs(np.array(items), active).tolist()] == expected
+    _check_box_pairs(items, active)
 
 
 @settings(max_examples=100, deadline=None)
@@ -52,10 +49,7 @@ def test_queries_and_pairs_match_brute_force(items, queries, cell, active):
        st.lists(st.booleans(), min_size=160, max_size=160))
 def test_pairs_of_a_crowd_match_brute_force(items, active):
     """A crowd is paired through a grid of cells as large as its largest box, not by the sweep."""
-    active = np.array(active[:len(items)])
-    expected = sorted((i, j) for i in range(len(items)) for j in range(i + 1, len(items))
-                      if _overlaps(items[i], items[j]) and (active[i] or active[j]))
-    assert [tuple(p) for p in box_pairs(np.array(items), active).tolist()] == expected
+    _check_box_pairs(items, active)
 
 
 @settings(max_examples=60, deadline=None)
@@ -76,6 +70,14 @@ def test_walls_kept_in_fat_boxes_are_the_grids_answer_as_bodies_move(items, step
         state[:, X] += [dx, -dy, 0.5 * dx]
         state[:, Y] += [dy, dx, -0.5 * dy]
         _check_bodies_near(items, grid, fat_boxes, state, radius, 0.01)
+
+
+def _check_box_pairs(items: list, active: list[bool]) -> None:
+    """`box_pairs` of these boxes (the first len(items) flags of `active`) against brute force."""
+    flags = np.array(active[:len(items)])
+    expected = sorted((i, j) for i in range(len(items)) for j in range(i + 1, len(items))
+                      if _overlaps(items[i], items[j]) and (flags[i] or flags[j]))
+    assert [tuple(p) for p in box_pairs(np.array(items), flags).tolist()] == expected
 
 
 def _check_bodies_near(items: list, grid: BoxGrid, fat_boxes: FatBoxes, state: np.ndarray, radius: np.ndarray,

@@ -8,11 +8,13 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import esper
+import numpy as np
 
 from polygolf.engine.components import Body
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.motion import kinetic_energy
 from polygolf.engine.physics.presets import Knobs
+from polygolf.engine.systems.run import StageRun, measure_substep, schedule
 
 
 @dataclass(slots=True)
@@ -27,6 +29,15 @@ class Metrics:
     wall_seconds: float = 0.0
     system_seconds: dict[str, float] = field(default_factory=dict)
 
+    def packed(self) -> np.ndarray:
+        """What `run.measure_substep` keeps up to date."""
+        return np.array([self.final_energy, self.max_energy, self.max_energy_rise, float(self.nan),
+                         self.max_penetration])
+
+    def unpack(self, values: np.ndarray) -> None:
+        self.final_energy, self.max_energy, self.max_energy_rise, nan, self.max_penetration = values.tolist()
+        self.nan = nan != 0.0
+
     def energy_ratio(self, energy: float) -> float | None:
         if self.initial_energy > 0.0:
             return energy / self.initial_energy
@@ -34,7 +45,9 @@ class Metrics:
 
 
 class Simulation:
-    """Steps whole 1/60 s frames; each frame runs every processor once per substep.
+    """Steps whole 1/60 s frames; each frame runs every processor once per substep. Consecutive
+    compiled stages run as one (`systems.run`); a world that is all compiled stages runs each
+    frame in one kernel call, measuring included.
 
     esper keeps its worlds in module state, so every call switches to this simulation's own world;
     `close()` deletes it.
@@ -52,8 +65,10 @@ class Simulation:
         self.scene_name = scene_name
         self.metrics = Metrics()
         esper.switch_world(world)
-        for priority, proc in enumerate(reversed(self.processors)):
+        scheduled = schedule(res, self.processors)
+        for priority, proc in enumerate(reversed(scheduled)):
             esper.add_processor(proc, priority=priority)
+        self._whole = scheduled[0] if len(scheduled) == 1 and isinstance(scheduled[0], StageRun) else None
         energy = self.kinetic_energy()
         self.metrics.initial_energy = self.metrics.max_energy = self.metrics.final_energy = energy
 
@@ -72,6 +87,13 @@ class Simulation:
         start = time.perf_counter()
         times = metrics.system_seconds
         for _ in range(frames):
+            if self._whole is not None and not profile:
+                values = metrics.packed() if measure else None
+                self._whole.process(substeps, values)
+                if values is not None:
+                    metrics.unpack(values)
+                metrics.frames += 1
+                continue
             for _ in range(substeps):
                 if profile:
                     for proc in self.processors:
@@ -89,19 +111,9 @@ class Simulation:
         self.step(round(seconds * 60.0), measure=measure)
 
     def _measure(self) -> None:
-        metrics = self.metrics
-        energy, finite = kinetic_energy(self.res.bodies.gather(esper.get_component(Body)))
-        if not finite:
-            metrics.nan = True
-        if energy - metrics.final_energy > metrics.max_energy_rise:
-            metrics.max_energy_rise = energy - metrics.final_energy
-        metrics.final_energy = energy
-        if energy > metrics.max_energy:
-            metrics.max_energy = energy
-        stats = self.res.stats
-        if stats.max_penetration > metrics.max_penetration:
-            metrics.max_penetration = stats.max_penetration
-        stats.max_penetration = 0.0
+        values = self.metrics.packed()
+        measure_substep(self.res.bodies.gather(esper.get_component(Body)), self.res.stats.values, values)
+        self.metrics.unpack(values)
 
     @property
     def knobs(self) -> Knobs:

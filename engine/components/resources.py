@@ -53,6 +53,12 @@ class StaticWorld:
         """What a kernel reads of the walls: vertices, normals, piece rows, internal edges, hidden vertices."""
         return self.pieces.verts, self.pieces.normals, self.pieces.first, self.internal, self.hidden
 
+    @property
+    def packed(self) -> tuple:
+        """Everything a stage's kernel reads of the walls, in one tuple: `arrays`, the pieces'
+        materials, owners and indices, the stand-in body's row, the grid's `arrays`."""
+        return (self.arrays, self.materials, self.owner, self.index, self.body._row, self.grid.arrays)
+
     @classmethod
     def of(cls, walls: Sequence[tuple[int, Wall]], cell_size: float) -> StaticWorld:
         """From (entity, wall) pairs, their seams already marked (assemble.mark_seams)."""
@@ -89,6 +95,7 @@ class Shapes:
     lookup: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))  # entity -> row (-1: none)
     _everyone: list | None = None  # esper's list of bodies when `current` last answered
     _current: tuple = ()
+    packed: tuple = ()  # what a stage's kernel reads of the shapes, as `current` last gave them
 
     def index(self, ents: np.ndarray) -> np.ndarray:
         """The rows (as `of` gives them) of these entities, each of which has a body and a collider."""
@@ -113,12 +120,18 @@ class Shapes:
         """The store's state gathered for `esper.get_component(Body)` (`everyone`), the shape table
         for `esper.get_components(Body, Collider)` (`bodies`) and each of those bodies' rows in the
         state: what a contact stage reads each substep, worked out again only when either list
-        changes (two identity tests while nothing is added or taken away)."""
+        changes (two identity tests while nothing is added or taken away). Also sets `packed`: all
+        of that a kernel reads, in one tuple (the table's vertices, normals, piece rows, reaches and
+        body rows; the bodies' rows, radii, widths, materials and entities; the entities' shapes)."""
         if everyone is not self._everyone or bodies is not self._bodies:
             state = store.gather(everyone)
             table, _ = self.of(bodies)
-            self._current = (state, table, self._selection.of(store, bodies))
+            rows = self._selection.of(store, bodies)
+            self._current = (state, table, rows)
             self._everyone = everyone
+            pieces = table.pieces
+            self.packed = (pieces.verts, pieces.normals, pieces.first, pieces.reach, table.body_first, rows,
+                           self.radius, self.thickness, self.materials, self.ents, self.lookup)
         return self._current
 
 
@@ -133,6 +146,11 @@ class Candidates:
     near_first: np.ndarray = field(default_factory=lambda: np.zeros(1, dtype=np.int64))
     near_found: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
     pair_ents: np.ndarray = field(default_factory=lambda: np.zeros((0, 2), dtype=np.int64))  # (a, b), a < b, sorted
+
+    @property
+    def arrays(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """As a kernel takes them: near, near_first, near_found, pair_ents."""
+        return self.near, self.near_first, self.near_found, self.pair_ents
 
     @property
     def pairs(self) -> list[tuple[int, int]]:
@@ -152,12 +170,34 @@ class Candidates:
                            else np.zeros(0, dtype=np.int64))
 
 
-@dataclass(slots=True)
 class Contacts:
     """Narrowphase -> resolve, impacts, restitution, bumper and rest detection: this substep's
-    contacts (`contact.ContactTable`), left for the next substep's warm start."""
+    contacts (`contact.ContactTable`), left for the next substep's warm start.
 
-    table: ContactTable = field(default_factory=ContactTable.empty)
+    A run of compiled stages (`systems.run.StageRun`) keeps the table it makes inside the run
+    (`keeper`); `table` fetches it from there only when someone asks."""
+
+    __slots__ = ("_table", "keeper", "_stale")
+
+    def __init__(self, table: ContactTable | None = None) -> None:
+        self._table = table if table is not None else ContactTable.empty()
+        self.keeper = None  # the run holding the newest table, which `table` then shares or fetches
+        self._stale = False
+
+    @property
+    def table(self) -> ContactTable:
+        if self._stale:
+            self._table, self._stale = self.keeper.table(), False
+        return self._table
+
+    @table.setter
+    def table(self, table: ContactTable) -> None:
+        self._table, self.keeper, self._stale = table, None, False
+
+    def keep(self, run: object, fresh: bool = False) -> None:
+        """`run` holds the newest table: a new one (`fresh`: fetched when asked for), or the one here."""
+        self.keeper = run
+        self._stale = self._stale or fresh
 
     @property
     def manifolds(self) -> list[Manifold]:
@@ -174,14 +214,40 @@ class Contacts:
         return len(self.table.points)
 
 
-@dataclass(slots=True)
-class Stats:
-    """Measurements the stages add to; whoever reads one resets it."""
+# Columns of `Stats.values`: what the stages add to, in one array a compiled run of stages can write.
+PENETRATION, BOUNCES, TOI_HITS, COLD_RESTARTS = range(4)
 
-    max_penetration: float = 0.0
-    bounces: int = 0
-    toi_hits: int = 0
-    cold_restarts: int = 0  # substeps whose warm start would have added energy
+
+class Stats:
+    """Measurements the stages add to; whoever reads one resets it. Kept in one float array
+    (`values`, the columns above) so a compiled run of stages adds to them in place."""
+
+    __slots__ = ("values",)
+
+    def __init__(self) -> None:
+        self.values = np.zeros(4)
+
+    def _get(column: int) -> property:  # noqa: N805 (a property factory, used in this class body only)
+        def get(self: Stats) -> float:
+            return float(self.values[column])
+
+        def put(self: Stats, value: float) -> None:
+            self.values[column] = value
+        return property(get, put)
+
+    def _count(column: int) -> property:  # noqa: N805
+        def get(self: Stats) -> int:
+            return int(self.values[column])
+
+        def put(self: Stats, value: int) -> None:
+            self.values[column] = value
+        return property(get, put)
+
+    max_penetration = _get(PENETRATION)
+    bounces = _count(BOUNCES)
+    toi_hits = _count(TOI_HITS)
+    cold_restarts = _count(COLD_RESTARTS)  # substeps whose warm start would have added energy
+    del _get, _count
 
 
 HEARD_LIMIT = 256  # events and impacts kept for a listener that has not drained them (a bound, not a budget)

@@ -163,6 +163,11 @@ class ContactTable:
     def __len__(self) -> int:
         return len(self.pair)
 
+    @property
+    def arrays(self) -> tuple[np.ndarray, ...]:
+        """The columns as a kernel takes them: ents, pair, normals, block, first, points, keys."""
+        return self.ents, self.pair, self.normals, self.block, self.first, self.points, self.keys
+
     def body(self, row: int) -> Body:
         return self.static if row == len(self.store.state) else self.store.handle(row)
 

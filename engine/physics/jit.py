@@ -25,8 +25,13 @@ F = TypeVar("F", bound=Callable)
 
 try:
     import numba
+    import numba.typed
 except ImportError:  # the same code, interpreted
     numba = None
+
+# A list a kernel makes and keeps between calls: passing it costs one argument however much it holds
+# (numba's typed list; a plain list where the code runs interpreted).
+HeldList = numba.typed.List if numba is not None else list
 
 COMPILED = numba is not None and os.environ.get("NUMBA_DISABLE_JIT", "0") in ("", "0")
 
@@ -57,6 +62,7 @@ KERNEL_MODULES = (
     "polygolf.engine.physics.toi",
     "polygolf.engine.physics.grid",
     "polygolf.engine.physics.solver",
+    "polygolf.engine.systems.run",
 )
 
 

@@ -614,20 +614,23 @@ def solve(table: ContactTable, knobs: Knobs, dt: float, friction: bool) -> int:
     and pseudo-velocity). Returns how many islands threw their warm start away for a cold solve."""
     if not len(table):
         return 0
-    return _solve_bodies(table.store.state, table.static._row, table.normals, table.pair, table.first, table.block,
-                         table.points, bool(knobs.warm_start), int(knobs.iterations), int(knobs.position_iterations),
-                         _CORRECTIONS[knobs.position_correction], float(dt), bool(friction), POSITION_BETA, LINEAR_SLOP,
-                         MAX_CORRECTION, BLOCK_MAX_CONDITION)
+    return solve_table(table.store.state, table.static._row, table.arrays, *solve_knobs(knobs), float(dt),
+                       bool(friction))
+
+
+def solve_knobs(knobs: Knobs) -> tuple[bool, int, int, int]:
+    """The knobs `solve_table` follows: warm start, iterations, position iterations, correction."""
+    return (bool(knobs.warm_start), int(knobs.iterations), int(knobs.position_iterations),
+            _CORRECTIONS[knobs.position_correction])
 
 
 @kernel
-def _solve_bodies(state: np.ndarray, static: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray,
-                  block: np.ndarray, points: np.ndarray, warm: bool, iterations: int, position_iterations: int,
-                  correction: int, dt: float, friction: bool, beta: float, slop: float, max_push: float,
-                  max_condition: float) -> int:
-    """`solve_contacts` on the solver's rows of a store's `state` and the static world's row (a table's
-    body rows: the static world is the row after the store's), copied in and their pose, velocity
-    and pseudo-velocity written back."""
+def solve_table(state: np.ndarray, static: np.ndarray, table: tuple, warm: bool, iterations: int,
+                position_iterations: int, correction: int, dt: float, friction: bool) -> int:
+    """`solve_contacts` on a table's columns (`ContactTable.arrays`), the rows of a store's `state`
+    and the static world's row (a table's body rows: the static world is the row after the
+    store's), copied in and their pose, velocity and pseudo-velocity written back."""
+    _, pair, normals, block, first, points, _ = table
     n = state.shape[0]
     bodies = np.empty((n + 1, body.SOLVER_COLUMNS))
     for c in range(body.SOLVER_COLUMNS):
@@ -635,7 +638,8 @@ def _solve_bodies(state: np.ndarray, static: np.ndarray, normals: np.ndarray, pa
             bodies[k, c] = state[k, c]
         bodies[n, c] = static[c]
     cold_restarts = solve_contacts(bodies, normals, pair, first, block, points, warm, iterations, position_iterations,
-                                   correction, dt, friction, beta, slop, max_push, max_condition)
+                                   correction, dt, friction, POSITION_BETA, LINEAR_SLOP, MAX_CORRECTION,
+                                   BLOCK_MAX_CONDITION)
     for k in range(n + 1):
         row = state[k] if k < n else static
         for c in range(body.X, body.SPIN + 1):
@@ -652,9 +656,9 @@ def _body_row(state: np.ndarray, static: np.ndarray, k: int) -> np.ndarray:
 
 
 @kernel
-def _restitution(state: np.ndarray, static: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray,
-                 points: np.ndarray, threshold: float) -> int:
-    """`apply_restitution` on a table's arrays and its bodies' rows, in place."""
+def restitute(state: np.ndarray, static: np.ndarray, table: tuple, threshold: float) -> int:
+    """`apply_restitution` on a table's columns (`ContactTable.arrays`) and its bodies' rows, in place."""
+    _, pair, normals, _, first, points, _ = table
     bounced = 0
     for k in range(pair.shape[0]):
         nx, ny = normals[k, M_NX], normals[k, M_NY]
@@ -682,8 +686,7 @@ def apply_restitution(table: ContactTable, threshold: float) -> int:
     """Poisson restitution: every point that was approaching faster than `threshold` gets e times
     its compression impulse again. Returns how many points bounced. Runs after `solve`, on the
     bodies' rows themselves (a point resting is passed over in the kernel)."""
-    return _restitution(table.store.state, table.static._row, table.normals, table.pair, table.first, table.points,
-                        threshold)
+    return restitute(table.store.state, table.static._row, table.arrays, threshold)
 
 
 @warm_up("contact solver")

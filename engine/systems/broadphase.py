@@ -4,11 +4,8 @@ import numpy as np
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.grid import bodies_near, body_pairs, by_entity
+from polygolf.engine.physics.jit import kernel
 from polygolf.engine.physics.settings import CONTACT_MARGIN
-
-_NO_PAIRS = np.zeros((0, 2), dtype=np.int64)
-_NONE_NEAR = np.zeros(0, dtype=np.int64)
-_NO_ROWS = np.zeros(1, dtype=np.int64)
 
 
 class BroadphaseProcessor(esper.Processor):
@@ -24,26 +21,38 @@ class BroadphaseProcessor(esper.Processor):
         walls = len(res.statics.grid)  # the grid query's scratch, and the answer's arrays, kept between substeps
         self._seen, self._scratch = np.zeros(walls, dtype=np.bool_), np.empty(walls, dtype=np.int64)
         self._near, self._first = np.empty(0, dtype=np.int64), np.empty(1, dtype=np.int64)
-        self._found = np.empty(16, dtype=np.int64)
+        self.found = np.empty(16, dtype=np.int64)  # grown by `pick` when it must be (so passed and given back)
 
-    def process(self) -> None:
+    def inputs(self) -> tuple:
+        """What `pick` reads besides the state, the shapes, the walls, the fat boxes and the found
+        walls' array: the grid query's scratch, the answer's arrays, whether there are pairs to
+        look for and whether bodies meet each other."""
         bodies = esper.get_components(Body, Collider)
-        state, _, rows = self.shapes.current(self.bodies, esper.get_component(Body), bodies)
-        ents = self.shapes.ents
+        _, _, rows = self.shapes.current(self.bodies, esper.get_component(Body), bodies)
         if len(self._near) != len(rows):
             self._near, self._first = np.empty(len(rows), dtype=np.int64), np.empty(len(rows) + 1, dtype=np.int64)
-        self._found, count = bodies_near(state, rows, self.shapes.radius, CONTACT_MARGIN, self.statics.grid.arrays,
-                                         self.fat_boxes.of(state, len(self._seen)), self._seen, self._scratch,
-                                         self._near, self._first, self._found)
-        candidates = self.candidates
-        if count:
-            candidates.near = ents[self._near[:count]]
-            candidates.near_first = self._first[:count + 1].copy()
-            candidates.near_found = self._found[:self._first[count]].copy()
-        else:  # most substeps of a ball in the open
-            candidates.near, candidates.near_first, candidates.near_found = _NONE_NEAR, _NO_ROWS, _NONE_NEAR
-        pairs = _NO_PAIRS
-        if len(bodies) > 1:
-            pairs = by_entity(body_pairs(state, rows, self.shapes.radius, CONTACT_MARGIN, False,
-                                         self.config.collide_bodies, False), ents)
-        self.candidates.pair_ents = pairs  # in entity order, whichever way they were found
+        return self._seen, self._scratch, self._near, self._first, len(bodies) > 1, self.config.collide_bodies
+
+    def process(self) -> None:
+        inputs = self.inputs()  # first: it gathers the state
+        state = self.bodies.state
+        (self.candidates.near, self.candidates.near_first, self.candidates.near_found,
+         self.candidates.pair_ents), self.found = pick(state, self.shapes.packed, self.statics.packed,
+                                                       self.fat_boxes.of(state, len(self._seen)), inputs, self.found)
+
+
+@kernel
+def pick(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple, found: np.ndarray
+         ) -> tuple[tuple, np.ndarray]:
+    """The stage on a store's state (`Shapes.packed`, `StaticWorld.packed`, `FatBoxes.of`): the
+    candidates (`Candidates.arrays`: bodies with walls near, as entities; their walls in compressed
+    rows; body pairs as entities, in entity order however they were found), and `found` (grown if
+    it had to)."""
+    _, _, _, _, _, rows, radius, _, _, ents, _ = shapes
+    grid = walls[5]
+    seen, scratch, near, first, several, meet = inputs
+    found, count = bodies_near(state, rows, radius, CONTACT_MARGIN, grid, fat_boxes, seen, scratch, near, first, found)
+    pairs = np.zeros((0, 2), dtype=np.int64)
+    if several:
+        pairs = by_entity(body_pairs(state, rows, radius, CONTACT_MARGIN, False, meet, False), ents)
+    return (ents[near[:count]], first[:count + 1].copy(), found[:first[count]].copy(), pairs), found

@@ -1,14 +1,13 @@
-import math
-
 import esper
 import numpy as np
 
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
-from polygolf.engine.physics.body import INV_MASS
-from polygolf.engine.physics.collide import NO_SEAMS, max_separation
-from polygolf.engine.physics.geometry import ShapeTable
-from polygolf.engine.physics.grid import body_pairs
+from polygolf.engine.physics.body import ANGLE, ANGLE0, INV_MASS, X0, Y0, X, Y
+from polygolf.engine.physics.collide import max_separation
+from polygolf.engine.physics.geometry import pose_piece
+from polygolf.engine.physics.grid import body_pairs, overlapping
+from polygolf.engine.physics.jit import kernel
 from polygolf.engine.physics.motion import rewind
 from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP, TOI_TARGET
 from polygolf.engine.physics.toi import body_pair_hits, first_wall_hits
@@ -34,77 +33,112 @@ class CCDProcessor(esper.Processor):
         self.shapes, self.bodies, self.fat_boxes = res.shapes, res.bodies, res.fat_boxes
         self._hits = np.empty(0)  # each body's time of impact this substep, kept between substeps
 
-    def process(self) -> None:
+    def inputs(self) -> tuple:
+        """What `sweep` reads besides the state, the shapes, the walls and the fat boxes: the grid
+        query's scratch, the times of impact's array, whether there are pairs to sweep and whether
+        bodies meet each other."""
         bodies = esper.get_components(Body, Collider)
-        state, table, rows = self.shapes.current(self.bodies, esper.get_component(Body), bodies)
-        walls = self.statics.pieces
+        _, _, rows = self.shapes.current(self.bodies, esper.get_component(Body), bodies)
         if len(self._hits) != len(rows):
             self._hits = np.empty(len(rows))
-        hits = self._hits
-        longest, count = first_wall_hits(
-            table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
-            state, rows, self.shapes.radius, LINEAR_SLOP, self.statics.grid.arrays,
-            self.fat_boxes.of(state, len(self._seen)), self._seen, self._found,
-            walls.verts, walls.normals, walls.first, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP, hits)
-        # No pair can need sweeping while no body steps half the linear slop.
-        if len(bodies) > 1 and longest >= 0.5 * LINEAR_SLOP:
-            count += self._body_hits(table, rows, hits)
-        if count:
-            self.stats.toi_hits += rewind(state, rows, hits)
+        return self._seen, self._found, self._hits, len(bodies) > 1, self.config.collide_bodies
 
-    def _pinched(self, body: Body, col: Collider, arm: Body, arm_col: Collider, t: float) -> bool:
-        """Whether the arm, meeting the body at fraction `t` of the substep, drives it into a wall it
-        lies against (within the contact margin): the push (the separating axis between arm and
-        body at the impact) points at least 15° into that wall's face. A body it meets
-        along the wall, or away from one, is pushed as usual."""
-        sa = arm.scratch
-        arm_verts, arm_normals = arm_col.posed(sa.x0 + t * (arm.x - sa.x0), sa.y0 + t * (arm.y - sa.y0),
-                                               sa.angle0 + t * (arm.angle - sa.angle0))
-        verts, normals = col.posed(body.x, body.y, body.angle)
-        arm_first, first = arm_col.shape.first, col.shape.first
-        best, push = -math.inf, (0.0, 0.0)
-        for i in range(len(arm_col.shape)):
-            for j in range(len(col.shape)):
-                gap, face = max_separation(arm_verts, arm_normals, arm_first[i], arm_first[i + 1], verts, first[j],
-                                           first[j + 1], NO_SEAMS, -1)
-                if gap > best:
-                    row = arm_first[i] + face
-                    best, push = gap, (arm_normals[row, 0], arm_normals[row, 1])
-                gap, face = max_separation(verts, normals, first[j], first[j + 1], arm_verts, arm_first[i],
-                                           arm_first[i + 1], NO_SEAMS, -1)
-                if gap > best:
-                    row = first[j] + face
-                    best, push = gap, (-normals[row, 0], -normals[row, 1])
-        r = col.radius + CONTACT_MARGIN
-        walls = self.statics.pieces
-        for g in self.statics.grid.query((body.x - r, body.y - r, body.x + r, body.y + r)):
-            for j in range(len(col.shape)):
-                gap, face = max_separation(walls.verts, walls.normals, walls.first[g], walls.first[g + 1], verts,
-                                           first[j], first[j + 1], NO_SEAMS, -1)
-                row = walls.first[g] + face
-                nx, ny = walls.normals[row, 0], walls.normals[row, 1]  # out of the wall, towards the body
-                if gap < CONTACT_MARGIN and push[0] * nx + push[1] * ny < -0.25:
-                    return True
-        return False
+    def process(self) -> None:
+        inputs = self.inputs()  # first: it gathers the state
+        state = self.bodies.state
+        self.stats.toi_hits += sweep(state, self.shapes.packed, self.statics.packed,
+                                     self.fat_boxes.of(state, len(self._seen)), inputs)
 
-    def _body_hits(self, table: ShapeTable, rows: np.ndarray, hits: np.ndarray) -> int:
-        """Pairs of bodies whose swept boxes overlap and that move fast relative to each other: each
-        one's earliest impact goes into `hits` (by its index in `rows`); a windmill's arm that would
-        crush the ball it meets stalls too. Returns how many pairs hit."""
-        pairs = body_pairs(self.bodies.state, rows, self.shapes.radius, TOI_TARGET, True, self.config.collide_bodies,
-                           True)
-        arm_hits = np.empty(len(pairs))
-        count = body_pair_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
-                               table.body_first, pairs, self.bodies.state, rows, self.shapes.radius,
-                               self.shapes.thickness, self.config.collide_bodies, LINEAR_SLOP, TOI_TARGET,
-                               0.25 * LINEAR_SLOP, LINEAR_SLOP, hits, arm_hits)
-        for g in np.flatnonzero(arm_hits < 1.0).tolist() if count else ():
-            hit = float(arm_hits[g])
-            a, b = pairs[g].tolist()
-            arm, ball = (a, b) if self.bodies.state[rows[a], INV_MASS] == 0.0 else (b, a)
-            arm_ent, ball_ent = self.shapes.ents[arm], self.shapes.ents[ball]
-            if self._pinched(esper.component_for_entity(ball_ent, Body), esper.component_for_entity(ball_ent, Collider),
-                             esper.component_for_entity(arm_ent, Body), esper.component_for_entity(arm_ent, Collider),
-                             hit):
-                hits[arm] = min(hits[arm], hit)
-        return count
+
+@kernel
+def sweep(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple) -> int:
+    """The stage on a store's state (`Shapes.packed`, `StaticWorld.packed`, `FatBoxes.of`); returns
+    how many bodies went back."""
+    lv, ln, first, reach, body_first, rows, radius, _, _, _, _ = shapes
+    (wv, wn, wfirst, _, _), _, _, _, _, grid = walls
+    seen, found, hits, several, _ = inputs
+    longest, count = first_wall_hits(lv, ln, first, reach, body_first, state, rows, radius, LINEAR_SLOP, grid,
+                                      fat_boxes, seen, found, wv, wn, wfirst, TOI_TARGET, 0.25 * LINEAR_SLOP,
+                                      LINEAR_SLOP, hits)
+    # No pair can need sweeping while no body steps half the linear slop.
+    if several and longest >= 0.5 * LINEAR_SLOP:
+        count += _body_hits(state, shapes, walls, inputs)
+    return rewind(state, rows, hits) if count else 0
+
+
+@kernel
+def _body_hits(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple) -> int:
+    """Pairs of bodies whose swept boxes overlap and that move fast relative to each other: each
+    one's earliest impact goes into the hits (by its index in the rows); a windmill's arm that would
+    crush the ball it meets stalls too. Returns how many pairs hit."""
+    lv, ln, first, reach, body_first, rows, radius, thickness, _, _, _ = shapes
+    (wv, wn, wfirst, _, _), _, _, _, _, grid = walls
+    seen, found, hits, _, meet = inputs
+    pairs = body_pairs(state, rows, radius, TOI_TARGET, True, meet, True)
+    arm_hits = np.empty(len(pairs))
+    count = body_pair_hits(lv, ln, first, reach, body_first, pairs, state, rows, radius, thickness, meet, LINEAR_SLOP,
+                           TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP, hits, arm_hits)
+    if count == 0:
+        return 0
+    for g in range(len(pairs)):
+        hit = arm_hits[g]
+        if hit >= 1.0:
+            continue
+        a, b = pairs[g, 0], pairs[g, 1]
+        arm, ball = (a, b) if state[rows[a], INV_MASS] == 0.0 else (b, a)
+        if _pinched(lv, ln, first, body_first, state, rows, radius, arm, ball, hit, grid, seen, found, wv, wn, wfirst):
+            hits[arm] = min(hits[arm], hit)
+    return count
+
+
+@kernel
+def _posed(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first: np.ndarray, q: int, x: float, y: float,
+           angle: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Shape q of a shape table at a pose: its vertices, normals and piece rows from 0."""
+    v0, v1 = first[body_first[q]], first[body_first[q + 1]]
+    verts, normals = np.empty((v1 - v0, 2)), np.empty((v1 - v0, 2))
+    pose_piece(lv, ln, v0, v1, x, y, angle, verts, normals)
+    return verts, normals, first[body_first[q]:body_first[q + 1] + 1] - v0
+
+
+@kernel
+def _pinched(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first: np.ndarray, state: np.ndarray,
+             rows: np.ndarray, radius: np.ndarray, arm: int, ball: int, t: float, grid: tuple, seen: np.ndarray,
+             found: np.ndarray, wv: np.ndarray, wn: np.ndarray, wfirst: np.ndarray) -> bool:
+    """Whether the arm (shape `arm`), meeting the ball (shape `ball`) at fraction `t` of the
+    substep, drives it into a wall it lies against (within the contact margin): the push (the
+    separating axis between arm and ball at the impact) points at least 15° into that wall's face.
+    A ball it meets along the wall, or away from one, is pushed as usual."""
+    ka, kb = rows[arm], rows[ball]
+    arm_v, arm_n, arm_first = _posed(lv, ln, first, body_first, arm, state[ka, X0] + t * (state[ka, X] - state[ka, X0]),
+                                     state[ka, Y0] + t * (state[ka, Y] - state[ka, Y0]),
+                                     state[ka, ANGLE0] + t * (state[ka, ANGLE] - state[ka, ANGLE0]))
+    verts, normals, own_first = _posed(lv, ln, first, body_first, ball, state[kb, X], state[kb, Y], state[kb, ANGLE])
+    no_seams = np.zeros(0, dtype=np.bool_)
+    best, push_x, push_y = -np.inf, 0.0, 0.0
+    for i in range(len(arm_first) - 1):
+        for j in range(len(own_first) - 1):
+            gap, face = max_separation(arm_v, arm_n, arm_first[i], arm_first[i + 1], verts, own_first[j],
+                                       own_first[j + 1], no_seams, -1)
+            if gap > best:
+                row = arm_first[i] + face
+                best, push_x, push_y = gap, arm_n[row, 0], arm_n[row, 1]
+            gap, face = max_separation(verts, normals, own_first[j], own_first[j + 1], arm_v, arm_first[i],
+                                       arm_first[i + 1], no_seams, -1)
+            if gap > best:
+                row = own_first[j] + face
+                best, push_x, push_y = gap, -normals[row, 0], -normals[row, 1]
+    r = radius[ball] + CONTACT_MARGIN
+    x, y = state[kb, X], state[kb, Y]
+    box = np.array([x - r, y - r, x + r, y + r])
+    boxes, x0, y0, inv, nx, ny, cell_first, cell_items, large = grid
+    for n in range(overlapping(boxes, x0, y0, inv, nx, ny, cell_first, cell_items, large, box, seen, found)):
+        g = found[n]
+        for j in range(len(own_first) - 1):
+            gap, face = max_separation(wv, wn, wfirst[g], wfirst[g + 1], verts, own_first[j], own_first[j + 1],
+                                       no_seams, -1)
+            row = wfirst[g] + face
+            # wn[row] points out of the wall, towards the ball.
+            if gap < CONTACT_MARGIN and push_x * wn[row, 0] + push_y * wn[row, 1] < -0.25:
+                return True
+    return False

@@ -22,12 +22,17 @@ class DragProcessor(esper.Processor):
         self._found: list | None = None
         self._rates = np.zeros((0, 4))
 
-    def process(self) -> None:
-        state = self.bodies.gather(esper.get_component(Body))
+    def inputs(self) -> tuple[np.ndarray, np.ndarray]:
+        """`motion.drag`'s rows and rates."""
+        self.bodies.gather(esper.get_component(Body))
         found = esper.get_components(Body, Drag)
         rows = self._dragged.of(self.bodies, found)
         if found is not self._found:
             self._rates = np.array([(d.linear, d.angular, d.rolling, d.rolling_angular) for _, (_, d) in found],
                                    dtype=np.float64).reshape(-1, 4)
             self._found = found
-        drag(state, rows, self._rates, self.config.dt)
+        return rows, self._rates
+
+    def process(self) -> None:
+        inputs = self.inputs()  # first: it gathers the state
+        drag(self.bodies.state, *inputs, self.config.dt)

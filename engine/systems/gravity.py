@@ -16,12 +16,17 @@ class GravityProcessor(esper.Processor):
         self.config, self.bodies = res.config, res.bodies
         self._every = (np.zeros(0, dtype=np.int64), np.zeros((1, 2)), np.zeros(0, dtype=np.int64))  # rows, push, which
 
-    def process(self) -> None:
+    def inputs(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """`motion.accelerate`'s rows, push and which (every body, the one push)."""
         state = self.bodies.gather(esper.get_component(Body))
         rows, push, which = self._every
         gx, gy = self.config.gravity
         if len(rows) != len(state) or push[0, 0] != gx or push[0, 1] != gy:
             n = len(state)
-            self._every = rows, push, which = (np.arange(n, dtype=np.int64), np.array([[gx, gy]], dtype=np.float64),
-                                               np.zeros(n, dtype=np.int64))
-        accelerate(state, rows, push, which, self.config.dt)
+            self._every = (np.arange(n, dtype=np.int64), np.array([[gx, gy]], dtype=np.float64),
+                           np.zeros(n, dtype=np.int64))
+        return self._every
+
+    def process(self) -> None:
+        inputs = self.inputs()  # first: it gathers the state
+        accelerate(self.bodies.state, *inputs, self.config.dt)

@@ -4,6 +4,7 @@ import numpy as np
 from polygolf.engine.components import Body, Drag
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.body import Selection
+from polygolf.engine.physics.jit import kernel
 from polygolf.engine.physics.motion import advance, mark_touching
 from polygolf.engine.physics.settings import REST_ANGULAR, REST_LINEAR, REST_SPEED_CAP, TIME_TO_REST
 
@@ -25,22 +26,32 @@ class IntegrateProcessor(esper.Processor):
         self.config, self.contacts, self.bodies = res.config, res.contacts, res.bodies
         self._dragged = Selection()
         self._rows: np.ndarray | None = None
-        self._dragged_mask = np.zeros(0, dtype=np.bool_)  # bodies slowed by drag, for the rows above
-        self._settles = np.zeros(0, dtype=np.bool_)
-        self._touched = False  # whether `_settles` holds touching bodies besides the dragged
+        self._inputs: tuple = ()
 
-    def process(self) -> None:
+    def inputs(self) -> tuple:
+        """What `integrate` reads besides the state, the contacts and dt: the settle mask (dragged,
+        or touching something: kept between substeps), the dragged mask, whether the mask holds
+        touching bodies besides the dragged, and the store's entity lookup."""
         state = self.bodies.gather(esper.get_component(Body))
         dragged = self._dragged.of(self.bodies, esper.get_components(Body, Drag))
-        if dragged is not self._rows or len(self._dragged_mask) != len(state):
-            self._dragged_mask = np.zeros(len(state), dtype=np.bool_)
-            self._dragged_mask[dragged] = True
-            self._settles, self._rows, self._touched = self._dragged_mask.copy(), dragged, True
-        settles = self._settles  # dragged, or touching something (this substep's contacts)
-        table = self.contacts.table
-        if len(table) or self._touched:
-            settles[:] = self._dragged_mask
-            mark_touching(settles, table.ents, self.bodies.lookup)
-            self._touched = len(table) > 0
-        dt = self.config.dt
-        advance(state, settles, dt, REST_LINEAR * dt, REST_ANGULAR * dt, REST_SPEED_CAP, TIME_TO_REST)
+        if dragged is not self._rows or len(self._inputs[1]) != len(state):
+            mask = np.zeros(len(state), dtype=np.bool_)
+            mask[dragged] = True
+            self._inputs = (mask.copy(), mask, np.ones(1, dtype=np.bool_), self.bodies.lookup)
+            self._rows = dragged
+        return self._inputs
+
+    def process(self) -> None:
+        inputs = self.inputs()
+        integrate(self.bodies.state, self.contacts.table.ents, inputs, self.config.dt)
+
+
+@kernel
+def integrate(state: np.ndarray, touching: np.ndarray, inputs: tuple, dt: float) -> None:
+    """The stage on a store's state, given this substep's contacts' entity pairs (`touching`)."""
+    settles, dragged, touched, lookup = inputs
+    if len(touching) or touched[0]:
+        settles[:] = dragged
+        mark_touching(settles, touching, lookup)
+        touched[0] = len(touching) > 0
+    advance(state, settles, dt, REST_LINEAR * dt, REST_ANGULAR * dt, REST_SPEED_CAP, TIME_TO_REST)

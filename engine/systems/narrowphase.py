@@ -2,9 +2,11 @@
 import esper
 import numpy as np
 
-from polygolf.engine.components import Body, Collider
-from polygolf.engine.components.resources import Resources
-from polygolf.engine.physics.contact import ContactTable, find_contacts
+from polygolf.engine.components import Collider
+from polygolf.engine.components.resources import PENETRATION, Resources
+from polygolf.engine.physics.body import Body, BodyStore
+from polygolf.engine.physics.contact import KEY_COLUMNS, MANIFOLD_COLUMNS, POINT_COLUMNS, ContactTable, find_contacts
+from polygolf.engine.physics.jit import kernel
 from polygolf.engine.physics.settings import CONTACT_MARGIN, RESTITUTION_THRESHOLD
 
 
@@ -25,27 +27,51 @@ class NarrowphaseProcessor(esper.Processor):
         self.config, self.candidates, self.contacts = res.config, res.candidates, res.contacts
         self.statics, self.stats = res.statics, res.stats
         self.shapes, self.bodies = res.shapes, res.bodies
-        self._empty = ContactTable.empty()
+
+    def inputs(self) -> tuple[bool, bool]:
+        """What `touch` reads besides the state, the shapes, the walls, the candidates, the last
+        table and dt: the knobs it follows (position correction by NGS, warm start)."""
+        knobs = self.config.knobs
+        self.shapes.current(self.bodies, esper.get_component(Body), esper.get_components(Body, Collider))
+        return knobs.position_correction == "ngs", bool(knobs.warm_start)
 
     def process(self) -> None:
         candidates = self.candidates
         if not len(candidates.near) and not len(candidates.pair_ents):
-            self.contacts.table = self._empty  # nothing near: no kernel call (most substeps of a lone ball)
+            self.contacts.table = _EMPTY  # nothing near: no kernel call (most substeps of a lone ball)
             return
-        knobs, statics, shapes, old = self.config.knobs, self.statics, self.shapes, self.contacts.table
-        everyone = esper.get_components(Body, Collider)
-        state, table, store_rows = shapes.current(self.bodies, esper.get_component(Body), everyone)
-        pieces = table.pieces
-        *columns, deepest = find_contacts(
-            pieces.verts, pieces.normals, pieces.first, pieces.reach, table.body_first, state, store_rows,
-            shapes.radius, shapes.materials, shapes.ents, shapes.lookup, candidates.pair_ents, candidates.near,
-            candidates.near_first, candidates.near_found, statics.arrays, statics.materials, statics.owner,
-            statics.index, statics.body._row, self.config.dt, CONTACT_MARGIN, knobs.position_correction == "ngs",
-            self.stats.max_penetration, old.ents, old.first, old.keys, old.points, knobs.warm_start,
-            RESTITUTION_THRESHOLD)
-        self.stats.max_penetration = float(deepest)
-        if not len(columns[0]):
-            self.contacts.table = self._empty  # nothing touches
-            return
-        self.contacts.table = ContactTable(*columns[:3], np.zeros(len(columns[1]), dtype=np.bool_), *columns[3:],
-                                           self.bodies, statics.body)
+        inputs = self.inputs()  # first: it gathers the state
+        self.contacts.table = contact_table(
+            touch(self.bodies.state, self.shapes.packed, self.statics.packed, inputs, candidates.arrays,
+                  self.contacts.table.arrays, self.stats.values, self.config.dt), self.bodies, self.statics.body)
+
+
+_EMPTY = ContactTable.empty()
+
+
+def contact_table(columns: tuple, store: BodyStore, static: Body) -> ContactTable:
+    """The table object for `touch`'s columns."""
+    return ContactTable(*columns, store, static) if len(columns[0]) else _EMPTY
+
+
+@kernel
+def touch(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple, candidates: tuple, old: tuple,
+          stats: np.ndarray, dt: float) -> tuple:
+    """The stage on a store's state (`Shapes.packed`, `StaticWorld.packed`): the new table's
+    columns (`ContactTable.arrays`) for the candidates (`Candidates.arrays`), warm-started from the
+    old ones; the deepest overlap goes into `stats`."""
+    near, near_first, near_found, pair_ents = candidates
+    if not len(near) and not len(pair_ents):
+        return (np.zeros((0, 2), dtype=np.int64), np.zeros((0, 2), dtype=np.int64), np.zeros((0, MANIFOLD_COLUMNS)),
+                np.zeros(0, dtype=np.bool_), np.zeros(1, dtype=np.int64), np.zeros((0, POINT_COLUMNS)),
+                np.zeros((0, KEY_COLUMNS), dtype=np.int64))
+    lv, ln, first, reach, body_first, rows, radius, _, materials, ents, lookup = shapes
+    arrays, wall_materials, owner, index, static, _ = walls
+    ngs, warm = inputs
+    old_ents, _, _, _, old_first, old_points, old_keys = old
+    new_ents, pair, normals, new_first, points, keys, deepest = find_contacts(
+        lv, ln, first, reach, body_first, state, rows, radius, materials, ents, lookup, pair_ents, near, near_first,
+        near_found, arrays, wall_materials, owner, index, static, dt, CONTACT_MARGIN, ngs, stats[PENETRATION],
+        old_ents, old_first, old_keys, old_points, warm, RESTITUTION_THRESHOLD)
+    stats[PENETRATION] = deepest
+    return new_ents, pair, normals, np.zeros(len(pair), dtype=np.bool_), new_first, points, keys

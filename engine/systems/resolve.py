@@ -1,7 +1,9 @@
 import esper
+import numpy as np
 
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics import solver
+from polygolf.engine.physics.jit import kernel
 
 
 class ResolveProcessor(esper.Processor):
@@ -11,10 +13,25 @@ class ResolveProcessor(esper.Processor):
     name = "resolve"
 
     def __init__(self, res: Resources) -> None:
-        self.config, self.contacts, self.stats = res.config, res.contacts, res.stats
+        self.config, self.contacts, self.stats, self.statics = res.config, res.contacts, res.stats, res.statics
         self.friction = "friction" in res.config.effects
+
+    def inputs(self) -> tuple[bool, int, int, int, bool]:
+        """What `resolve` reads besides the state, the walls, the table and dt: the knobs, friction."""
+        return *solver.solve_knobs(self.config.knobs), self.friction
 
     def process(self) -> None:
         table = self.contacts.table
         if len(table):
-            self.stats.cold_restarts += solver.solve(table, self.config.knobs, self.config.dt, self.friction)
+            self.stats.cold_restarts += resolve(table.store.state, self.statics.packed, self.inputs(), table.arrays,
+                                                self.config.dt)
+
+
+@kernel
+def resolve(state: np.ndarray, walls: tuple, inputs: tuple, table: tuple, dt: float) -> int:
+    """The stage on a store's state (the static world's row from `StaticWorld.packed`); returns how
+    many islands were solved cold."""
+    if not len(table[1]):
+        return 0
+    warm, iterations, position_iterations, correction, friction = inputs
+    return solver.solve_table(state, walls[4], table, warm, iterations, position_iterations, correction, dt, friction)

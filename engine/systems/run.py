@@ -1,0 +1,257 @@
+"""A run of compiled stages: consecutive stages of the stage table whose whole work is a kernel, run by
+one kernel call (`run_stages`) instead of a Python call each. A world whose every stage is one runs a
+whole frame, all its substeps, in one call.
+
+Nothing here is a second engine: the run calls each stage's own kernel (the one its processor's
+`process` calls) with the processor's own `inputs()`, in the stage table's order. Between stages
+it hands on what they share as the resources do between processors: the candidates (broadphase to
+narrowphase), the contact table (narrowphase to the solver, restitution and the next substep's
+rest detection and warm start), the stats. A stage another kind of work needs (the golf rules,
+anything with events for Python) stays a processor of its own and ends a run.
+
+Every stage kind has a place in the inputs tuple; a stage the world does not run gets `IDLE` inputs
+of the same types, so one compiled `run_stages` serves every world.
+"""
+
+from __future__ import annotations
+
+import esper
+import numpy as np
+
+from polygolf.engine.components import Body, Collider
+from polygolf.engine.components.resources import (
+    BOUNCES,
+    COLD_RESTARTS,
+    PENETRATION,
+    TOI_HITS,
+    Resources,
+    Shapes,
+    StaticWorld,
+)
+from polygolf.engine.physics.body import COLUMNS, BodyStore
+from polygolf.engine.physics.contact import ContactTable
+from polygolf.engine.physics.geometry import Areas
+from polygolf.engine.physics.grid import FatBoxes
+from polygolf.engine.physics.jit import HeldList, kernel, warm_up
+from polygolf.engine.physics.motion import accelerate, drag, kinetic_energy, turn
+from polygolf.engine.systems.broadphase import BroadphaseProcessor, pick
+from polygolf.engine.systems.ccd import CCDProcessor, sweep
+from polygolf.engine.systems.drag import DragProcessor
+from polygolf.engine.systems.gravity import GravityProcessor
+from polygolf.engine.systems.ice import IceProcessor
+from polygolf.engine.systems.integrate import IntegrateProcessor, integrate
+from polygolf.engine.systems.narrowphase import NarrowphaseProcessor, contact_table, touch
+from polygolf.engine.systems.resolve import ResolveProcessor, resolve
+from polygolf.engine.systems.restitution import RestitutionProcessor, bounce
+from polygolf.engine.systems.sand import SandProcessor
+from polygolf.engine.systems.slope import SlopeProcessor, push_on_slopes
+from polygolf.engine.systems.spin import SpinProcessor
+from polygolf.engine.systems.surface import scale_on_surfaces
+
+# Stage codes, and the place of each stage's inputs in the inputs tuple (the last two have none).
+INTEGRATE, GRAVITY, SLOPE, SAND, ICE, DRAG, CCD, BROADPHASE, NARROWPHASE, RESOLVE, RESTITUTION, SPIN = range(12)
+CODES: dict[type[esper.Processor], int] = {
+    IntegrateProcessor: INTEGRATE, GravityProcessor: GRAVITY, SlopeProcessor: SLOPE, SandProcessor: SAND,
+    IceProcessor: ICE, DragProcessor: DRAG, CCDProcessor: CCD, BroadphaseProcessor: BROADPHASE,
+    NarrowphaseProcessor: NARROWPHASE, ResolveProcessor: RESOLVE, RestitutionProcessor: RESTITUTION,
+    SpinProcessor: SPIN,
+}
+
+# Columns of a run's metrics (`Simulation.Metrics`, as `measure_substep` keeps them).
+FINAL_ENERGY, MAX_ENERGY, MAX_RISE, NAN, MAX_PENETRATION = range(5)
+
+
+@kernel
+def measure_substep(state: np.ndarray, stats: np.ndarray, metrics: np.ndarray) -> None:
+    """After a substep: kinetic energy (last, largest, largest rise over one substep), whether
+    anything is no longer finite, and the deepest overlap since the last look (read from `stats`,
+    which it resets)."""
+    energy, finite = kinetic_energy(state)
+    if not finite:
+        metrics[NAN] = 1.0
+    if energy - metrics[FINAL_ENERGY] > metrics[MAX_RISE]:
+        metrics[MAX_RISE] = energy - metrics[FINAL_ENERGY]
+    metrics[FINAL_ENERGY] = energy
+    if energy > metrics[MAX_ENERGY]:
+        metrics[MAX_ENERGY] = energy
+    if stats[PENETRATION] > metrics[MAX_PENETRATION]:
+        metrics[MAX_PENETRATION] = stats[PENETRATION]
+    stats[PENETRATION] = 0.0
+
+
+@kernel
+def hold(codes: np.ndarray, state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple,
+         candidates: tuple, table: tuple, found: np.ndarray) -> HeldList:
+    """What a run keeps between calls, in one list (passing it costs one argument, not a hundred):
+    its stage codes, a store's state; what the stages share, the shapes (`Shapes.packed`), the
+    walls (`StaticWorld.packed`) and their fat boxes; each stage's inputs; and in a list of its own
+    (what changes from substep to substep) the candidates (`Candidates.arrays`), the contact table
+    (`ContactTable.arrays`: the next run's warm start) and the broadphase's found-walls array
+    (grown when it must be)."""
+    passed = HeldList()
+    passed.append((candidates, table, found))
+    held = HeldList()
+    held.append((codes, state, shapes, walls, fat_boxes, inputs, passed))
+    return held
+
+
+@kernel
+def held_table(held: HeldList) -> tuple:
+    """The contact table a run keeps (`ContactTable.arrays`)."""
+    return held[0][6][0][1]
+
+
+@kernel
+def put_table(held: HeldList, table: tuple) -> None:
+    """Give a run the contact table to go on from."""
+    passed = held[0][6]
+    candidates, _, found = passed[0]
+    passed[0] = (candidates, table, found)
+
+
+@kernel
+def run_stages(held: HeldList, substeps: int, dt: float, stats: np.ndarray, metrics: np.ndarray, measure: bool
+               ) -> None:
+    """A run's stages (`hold`), in order, `substeps` times, each with its inputs, and
+    `measure_substep` after each substep with `measure`."""
+    codes, state, shapes, walls, fat_boxes, inputs, passed = held[0]
+    candidates, table, found = passed[0]
+    for _ in range(substeps):
+        for code in codes:
+            if code == INTEGRATE:
+                integrate(state, table[0], inputs[INTEGRATE], dt)
+            elif code == SPIN:
+                turn(state, dt)
+            elif code == GRAVITY:
+                rows, push, which = inputs[GRAVITY]
+                accelerate(state, rows, push, which, dt)
+            elif code == SLOPE:
+                push_on_slopes(state, inputs[SLOPE], dt)
+            elif code == SAND:
+                scale_on_surfaces(state, inputs[SAND])
+            elif code == ICE:
+                scale_on_surfaces(state, inputs[ICE])
+            elif code == DRAG:
+                rows, rates = inputs[DRAG]
+                drag(state, rows, rates, dt)
+            elif code == CCD:
+                stats[TOI_HITS] += sweep(state, shapes, walls, fat_boxes, inputs[CCD])
+            elif code == BROADPHASE:
+                candidates, found = pick(state, shapes, walls, fat_boxes, inputs[BROADPHASE], found)
+            elif code == NARROWPHASE:
+                table = touch(state, shapes, walls, inputs[NARROWPHASE], candidates, table, stats, dt)
+            elif code == RESOLVE:
+                stats[COLD_RESTARTS] += resolve(state, walls, inputs[RESOLVE], table, dt)
+            elif code == RESTITUTION:
+                stats[BOUNCES] += bounce(state, walls, table)
+        if measure:
+            measure_substep(state, stats, metrics)
+    passed[0] = (candidates, table, found)
+
+
+def _idle_inputs() -> tuple:
+    """Inputs of every stage for a world without it: empty, of the types the stage's own give."""
+    ints, floats, flags = np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0, dtype=np.bool_)
+    areas = Areas.of([], [])
+    return (
+        (flags, flags.copy(), np.ones(1, dtype=np.bool_), ints),  # integrate
+        (ints, np.zeros((1, 2)), ints),  # gravity
+        (ints, areas.verts, areas.first, areas.boxes, np.zeros((0, 2)), ints.copy()),  # slope
+        (ints, areas.verts, areas.first, areas.boxes, floats, ints.copy()),  # sand
+        (ints, areas.verts, areas.first, areas.boxes, floats, ints.copy()),  # ice
+        (ints, np.zeros((0, 4))),  # drag
+        (flags, ints, floats, False, True),  # ccd
+        (flags, ints, ints, np.zeros(1, dtype=np.int64), False, True),  # broadphase
+        (False, True),  # narrowphase
+        (True, 1, 1, 0, True),  # resolve
+    )
+
+
+IDLE = _idle_inputs()
+_NO_METRICS = np.zeros(5)
+
+
+class StageRun(esper.Processor):
+    """Consecutive compiled stages as one processor: `process()` runs them for one substep, as
+    esper does; `process(substeps, metrics)` runs whole frames (the world has no other stage).
+    `members` are the stages' processors, which still run alone (a profile, a test).
+
+    What the run reads is held in a kernel's list (`hold`), made again only when esper's lists
+    change (any component added or taken away gives new lists) or the knobs do. The contact table
+    stays in it from run to run; `Contacts.table` fetches it when a stage or a tool outside asks,
+    and a table put there from outside is handed back in. The candidates live and die in the run
+    (a run that finds them also uses them)."""
+
+    def __init__(self, res: Resources, members: list[esper.Processor]) -> None:
+        codes = [CODES[type(member)] for member in members]
+        if BROADPHASE in codes and NARROWPHASE not in codes:
+            raise ValueError("a run that finds candidates must also use them")
+        self.res, self.members = res, members
+        self.name = "+".join(member.name for member in members)
+        self.codes = np.array(codes, dtype=np.int64)
+        self._by_code = dict(zip(codes, members, strict=True))
+        self._narrowphase = NARROWPHASE in self._by_code
+        self._key: tuple = ()
+        self._held = None
+
+    def _hold(self) -> None:
+        """Make the held list again if esper's lists or the knobs changed."""
+        res = self.res
+        everyone = esper.get_component(Body)
+        key = (everyone, res.config.knobs, res.config.gravity)
+        if self._key and all(a is b for a, b in zip(key, self._key, strict=True)):
+            return
+        table = res.contacts.table  # (fetched from the list about to go, if it is this run's)
+        res.shapes.current(res.bodies, everyone, esper.get_components(Body, Collider))
+        inputs = tuple(self._by_code[code].inputs() if code in self._by_code else IDLE[code]
+                       for code in range(len(IDLE)))
+        state = res.bodies.state
+        self._held = hold(self.codes, state, res.shapes.packed, res.statics.packed,
+                          res.fat_boxes.of(state, len(res.statics.grid)), inputs, res.candidates.arrays,
+                          table.arrays, np.zeros(16, dtype=np.int64))
+        self._key = key
+        res.contacts.keep(self)
+
+    def table(self) -> ContactTable:
+        """The contact table this run holds."""
+        return contact_table(held_table(self._held), self.res.bodies, self.res.statics.body)
+
+    def process(self, substeps: int = 1, metrics: np.ndarray | None = None) -> None:
+        res = self.res
+        self._hold()
+        if res.contacts.keeper is not self:  # a table put there since: go on from it
+            put_table(self._held, res.contacts.table.arrays)
+        run_stages(self._held, substeps, res.config.dt, res.stats.values,
+                   _NO_METRICS if metrics is None else metrics, metrics is not None)
+        res.contacts.keep(self, fresh=self._narrowphase)
+
+
+def schedule(res: Resources, processors: list[esper.Processor]) -> list[esper.Processor]:
+    """The processors as esper runs them: each stretch of two or more compiled stages as one run."""
+    out: list[esper.Processor] = []
+    stretch: list[esper.Processor] = []
+    for proc in [*processors, None]:
+        if proc is not None and type(proc) in CODES:
+            stretch.append(proc)
+            continue
+        out += [StageRun(res, stretch)] if len(stretch) > 1 else stretch
+        stretch = []
+        if proc is not None:
+            out.append(proc)
+    return out
+
+
+@warm_up("compiled stages")
+def _warm() -> None:
+    table = ContactTable.empty()
+    candidates = (np.zeros(0, dtype=np.int64), np.zeros(1, dtype=np.int64), np.zeros(0, dtype=np.int64),
+                  np.zeros((0, 2), dtype=np.int64))
+    shapes = Shapes()
+    shapes.current(BodyStore(), [], [])
+    walls = StaticWorld.of([], 1.0)
+    state = np.zeros((0, len(COLUMNS)))
+    held = hold(np.array(sorted(CODES.values()), dtype=np.int64), state, shapes.packed, walls.packed,
+                FatBoxes().of(state, 0), IDLE, candidates, table.arrays, np.zeros(16, dtype=np.int64))
+    put_table(held, table.arrays)
+    run_stages(held, 1, 1.0 / 240.0, np.zeros(4), np.zeros(5), True)
+    held_table(held)

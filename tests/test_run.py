@@ -1,0 +1,117 @@
+"""Runs of compiled stages (`systems.run`): a world steps through one kernel call a run, and that must
+be exactly what its processors do one by one (`Simulation.step(profile=True)` runs them alone)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from polygolf.engine.golf.play import HolePlay
+from polygolf.engine.golf.scenes import find_hole
+from polygolf.engine.loading.scene import ShapeSpec
+from polygolf.engine.physics import jit
+from polygolf.engine.physics.contact import ContactTable
+from polygolf.engine.systems import run
+from polygolf.engine.systems.run import StageRun, schedule
+
+from .conftest import ROOT
+from .helpers import scene_sim
+
+# Bodies against walls and each other, resting piles, spin, friction, NGS and no warm start.
+SCENES = [("pile", "balanced"), ("corner", "accurate"), ("body-tunnel", "fast"), ("stack-drop", "balanced"),
+          ("seam-slide", "fast"), ("heavy-crush", "balanced")]
+
+
+def _same_tables(a: ContactTable, b: ContactTable) -> None:
+    for x, y in zip(a.arrays, b.arrays, strict=True):
+        assert np.array_equal(x, y)
+
+
+@pytest.mark.parametrize(("scene", "preset"), SCENES)
+def test_a_run_is_its_processors_one_by_one(scene, preset):
+    with scene_sim(scene, preset) as whole, scene_sim(scene, preset) as alone:
+        assert whole._whole is not None, "a scene's stages are all compiled: one call a frame"
+        for _ in range(40):
+            whole.step(3)
+            alone.step(3, profile=True)
+            assert np.array_equal(whole.res.bodies.state, alone.res.bodies.state)
+            _same_tables(whole.res.contacts.table, alone.res.contacts.table)
+            assert np.array_equal(whole.res.stats.values, alone.res.stats.values)
+        assert whole.metrics.max_energy_rise == alone.metrics.max_energy_rise
+        assert whole.metrics.max_penetration == alone.metrics.max_penetration
+        assert whole.res.stats.bounces > 0 or whole.res.stats.toi_hits > 0 or scene == "stack-drop"
+
+
+@pytest.mark.parametrize("name", ["hazards:6", "hazards:2", "meadow:8"])  # a windmill, water, bumpers
+def test_a_hole_played_through_runs_is_played_alone_the_same(name):
+    """A hole's world has golf stages between its runs; a windmill's pinch test runs in the kernel."""
+    hole = find_hole(name, ROOT)
+    shape = ShapeSpec(star=(5, 2), radius=1.0)
+    whole, alone = HolePlay(hole, shape, "balanced"), HolePlay(hole, shape, "balanced")
+    try:
+        tee = whole.ball.x, whole.ball.y
+        for world in (whole, alone):
+            assert world.shoot(tee, (6.0, 2.5))
+        for _ in range(240):
+            whole.step(1)
+            alone.step(1, profile=True)
+        assert np.array_equal(whole.sim.res.bodies.state, alone.sim.res.bodies.state)
+        assert whole.state.strokes == alone.state.strokes == 1
+    finally:
+        whole.close()
+        alone.close()
+
+
+def test_schedule_joins_each_stretch_of_compiled_stages():
+    hole = find_hole("hazards:6", ROOT)
+    world = HolePlay(hole, ShapeSpec(regular=5, radius=1.0))
+    try:
+        scheduled = schedule(world.sim.res, world.sim.processors)
+        names = [p.name for p in scheduled]
+        runs = [p for p in scheduled if isinstance(p, StageRun)]
+        assert len(runs) == 1 and names[0] == "shot" and names[-1] == "scoring"
+        assert [m.name for m in runs[0].members][:2] == ["integrate", "spin"]
+        assert "impacts" in names and "impacts" not in runs[0].name  # events for Python end a run
+        assert sum(len(p.members) if isinstance(p, StageRun) else 1 for p in scheduled) == len(world.sim.processors)
+        assert world.sim._whole is None  # golf stages between runs: a substep at a time
+    finally:
+        world.close()
+
+
+def test_a_table_put_from_outside_is_what_the_run_goes_on_from():
+    """`Contacts.table` fetches the run's table when asked; one set from outside is handed back in."""
+    with scene_sim("pile", "balanced") as sim, scene_sim("pile", "balanced") as alone:
+        sim.step(40)
+        alone.step(40, profile=True)
+        table = sim.res.contacts.table
+        assert len(table) > 0
+        _same_tables(table, alone.res.contacts.table)
+        # Both forget their warm start: the run must start cold as the processors do.
+        sim.res.contacts.table = ContactTable.empty()
+        alone.res.contacts.table = ContactTable.empty()
+        sim.step(1)
+        alone.step(1, profile=True)
+        assert np.array_equal(sim.res.bodies.state, alone.res.bodies.state)
+        _same_tables(sim.res.contacts.table, alone.res.contacts.table)
+
+
+def test_a_run_that_finds_candidates_must_use_them():
+    with scene_sim("pile") as sim:
+        broadphase = next(p for p in sim.processors if p.name == "broadphase")
+        with pytest.raises(ValueError, match="candidates"):
+            StageRun(sim.res, [broadphase])
+
+
+@pytest.mark.skipif(not jit.COMPILED, reason="nothing is compiled with the kernels interpreted")
+def test_one_compiled_run_serves_every_world():
+    """Every stage a world does not run gets inputs of the same types as its own (`run.IDLE`)."""
+    for scene, preset in SCENES:
+        with scene_sim(scene, preset) as sim:
+            sim.step(2)
+    world = HolePlay(find_hole("hazards:6", ROOT), ShapeSpec(regular=5, radius=1.0))
+    try:
+        world.step(2)
+    finally:
+        world.close()
+    assert len(run.run_stages.signatures) == 1
+    assert len(run.hold.signatures) == 1

@@ -9,9 +9,7 @@ import pytest
 from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.golf.scenes import find_hole
 from polygolf.engine.loading.scene import ShapeSpec
-from polygolf.engine.physics import jit
 from polygolf.engine.physics.contact import ContactTable
-from polygolf.engine.systems import run
 from polygolf.engine.systems.run import StageRun, schedule
 
 from .conftest import ROOT
@@ -100,18 +98,3 @@ def test_a_run_that_finds_candidates_must_use_them():
         broadphase = next(p for p in sim.processors if p.name == "broadphase")
         with pytest.raises(ValueError, match="candidates"):
             StageRun(sim.res, [broadphase])
-
-
-@pytest.mark.skipif(not jit.COMPILED, reason="nothing is compiled with the kernels interpreted")
-def test_one_compiled_run_serves_every_world():
-    """Every stage a world does not run gets inputs of the same types as its own (`run.IDLE`)."""
-    for scene, preset in SCENES:
-        with scene_sim(scene, preset) as sim:
-            sim.step(2)
-    world = HolePlay(find_hole("hazards:6", ROOT), ShapeSpec(regular=5, radius=1.0))
-    try:
-        world.step(2)
-    finally:
-        world.close()
-    assert len(run.run_stages.signatures) == 1
-    assert len(run.hold.signatures) == 1

@@ -312,3 +312,25 @@ def test_stepping_compiles_nothing_the_warm_ups_did_not():
                        max_seconds=4.0, path=True)
     added = {name: [s for s in sigs if s not in before.get(name, [])] for name, sigs in _signatures().items()}
     assert not {name: new for name, new in added.items() if new}
+
+
+@pytest.mark.skipif(not jit.COMPILED, reason="nothing is compiled with the kernels interpreted")
+def test_one_compiled_run_serves_every_world():
+    """Every stage a world does not run gets inputs of the same types as its own (`run.IDLE`), so a
+    run of compiled stages is compiled once, whatever stages the world has."""
+    from polygolf.engine.golf.play import HolePlay
+    from polygolf.engine.golf.scenes import build_scene_file, find_hole
+    from polygolf.engine.loading.scene import ShapeSpec
+    from polygolf.engine.systems import run
+
+    for scene, preset in (("pile", "balanced"), ("corner", "accurate"), ("body-tunnel", "fast")):
+        with build_scene_file(SCENES_DIR / f"{scene}.yaml", preset) as sim:
+            sim.step(2)
+    for name in ("hazards:6", "hazards:4", "meadow:8"):
+        world = HolePlay(find_hole(name, ROOT), ShapeSpec(regular=5, radius=1.0))
+        try:
+            world.step(2)
+        finally:
+            world.close()
+    assert len(run.run_stages.signatures) == 1
+    assert len(run.hold.signatures) == 1

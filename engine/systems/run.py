@@ -243,15 +243,26 @@ def schedule(res: Resources, processors: list[esper.Processor]) -> list[esper.Pr
 
 @warm_up("compiled stages")
 def _warm() -> None:
-    table = ContactTable.empty()
+    """A run of every stage, and every stage's kernel alone (a stage between golf stages, a profile)."""
+    table = ContactTable.empty().arrays
     candidates = (np.zeros(0, dtype=np.int64), np.zeros(1, dtype=np.int64), np.zeros(0, dtype=np.int64),
                   np.zeros((0, 2), dtype=np.int64))
     shapes = Shapes()
     shapes.current(BodyStore(), [], [])
-    walls = StaticWorld.of([], 1.0)
-    state = np.zeros((0, len(COLUMNS)))
-    held = hold(np.array(sorted(CODES.values()), dtype=np.int64), state, shapes.packed, walls.packed,
-                FatBoxes().of(state, 0), IDLE, candidates, table.arrays, np.zeros(16, dtype=np.int64))
-    put_table(held, table.arrays)
-    run_stages(held, 1, 1.0 / 240.0, np.zeros(4), np.zeros(5), True)
+    walls = StaticWorld.of([], 1.0).packed
+    state, dt, stats = np.zeros((0, len(COLUMNS))), 1.0 / 240.0, np.zeros(4)
+    fat_boxes, found = FatBoxes().of(state, 0), np.zeros(16, dtype=np.int64)
+    held = hold(np.array(sorted(CODES.values()), dtype=np.int64), state, shapes.packed, walls, fat_boxes, IDLE,
+                candidates, table, found)
+    put_table(held, table)
+    run_stages(held, 1, dt, stats, np.zeros(5), True)
     held_table(held)
+    measure_substep(state, stats, np.zeros(5))
+    integrate(state, table[0], IDLE[INTEGRATE], dt)
+    push_on_slopes(state, IDLE[SLOPE], dt)
+    scale_on_surfaces(state, IDLE[SAND])
+    sweep(state, shapes.packed, walls, fat_boxes, IDLE[CCD])
+    pick(state, shapes.packed, walls, fat_boxes, IDLE[BROADPHASE], found)
+    touch(state, shapes.packed, walls, IDLE[NARROWPHASE], candidates, table, stats, dt)
+    resolve(state, walls, IDLE[RESOLVE], table, dt)
+    bounce(state, walls, table)

@@ -14,7 +14,7 @@ from polygolf.engine.components import Body
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.motion import kinetic_energy
 from polygolf.engine.physics.presets import Knobs
-from polygolf.engine.systems.run import StageRun, measure_substep, schedule
+from polygolf.engine.systems.run import StageRun, measure_substep, one_by_one, schedule
 
 
 @dataclass(slots=True)
@@ -69,6 +69,7 @@ class Simulation:
         for priority, proc in enumerate(reversed(scheduled)):
             esper.add_processor(proc, priority=priority)
         self._whole = scheduled[0] if len(scheduled) == 1 and isinstance(scheduled[0], StageRun) else None
+        self._one_by_one = one_by_one(res, self.processors)  # for a profile: each stage timed on its own
         energy = self.kinetic_energy()
         self.metrics.initial_energy = self.metrics.max_energy = self.metrics.final_energy = energy
 
@@ -96,7 +97,7 @@ class Simulation:
                 continue
             for _ in range(substeps):
                 if profile:
-                    for proc in self.processors:
+                    for proc in self._one_by_one:
                         t0 = time.perf_counter()
                         proc.process()
                         times[proc.name] = times.get(proc.name, 0.0) + time.perf_counter() - t0

@@ -79,13 +79,6 @@ def pose_piece(verts: np.ndarray, normals: np.ndarray, start: int, end: int, x: 
         out_normals[k, 1] = s * nx + c * ny
 
 
-@kernel
-def pose_set(verts: np.ndarray, normals: np.ndarray, x: float, y: float, angle: float,
-             out_verts: np.ndarray, out_normals: np.ndarray) -> None:
-    """Every row of a body-frame set at a pose."""
-    pose_piece(verts, normals, 0, verts.shape[0], x, y, angle, out_verts, out_normals)
-
-
 @dataclass(frozen=True, eq=False)
 class Areas:
     """Simple polygons (areas of a green: sand, water, a slope) back to back: area a has vertices
@@ -145,7 +138,3 @@ def _warm() -> None:
     state = np.zeros((1, len(COLUMNS)))
     state[0, X] = state[0, Y] = 0.25
     first_area(state, np.zeros(1, dtype=np.int64), area.verts, area.first, area.boxes, np.empty(1, dtype=np.int64))
-    square = ConvexSet.of([((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))],
-                          [((0.7, 0.7), (-0.7, 0.7), (-0.7, -0.7), (0.7, -0.7))])
-    out_v, out_n = np.empty_like(square.verts), np.empty_like(square.normals)
-    pose_set(square.verts, square.normals, 0.5, 0.5, 0.1, out_v, out_n)

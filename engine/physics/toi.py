@@ -198,8 +198,8 @@ def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reac
 def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
                     state: np.ndarray, rows: np.ndarray, radius: np.ndarray, least: float, grid: tuple,
                     fat_boxes: tuple, seen: np.ndarray, found: np.ndarray, wv: np.ndarray, wn: np.ndarray,
-                    wfirst: np.ndarray, target: float, tolerance: float, allowance: float, out: np.ndarray
-                    ) -> tuple[float, int]:
+                    wfirst: np.ndarray, target: float, tolerance: float, allowance: float, out: np.ndarray,
+                    work: tuple) -> tuple[float, int]:
     """For each body q of `rows` (a `body.BodyStore` state, from its pose at the substep's start to
     its pose now; shape q of a `ShapeTable`, bounding radius radius[q]), the earliest impact of any
     of its pieces with the wall pieces its swept box meets in `grid` (the walls' `BoxGrid.arrays`,
@@ -207,12 +207,12 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
     as a fraction of its motion; 1.0 if none, or if it is at rest, kinematic, or stepped less than
     `least` (the discrete contact handles small steps), into `out` (the caller's, kept between
     substeps). Returns the longest step of an awake body, and how many bodies hit.
-    `seen` and `found`: the grid query's scratch, one row per wall piece."""
+    `seen` and `found`: the grid query's scratch, one row per wall piece; `work`: the time of
+    impact's (`toi_work` for the widest piece of either set), kept by the caller."""
     out[:] = 1.0
     longest = 0.0
     hits = 0
     box = np.empty(4)
-    work = toi_work(max(widest(first), widest(wfirst)))
     fat, walls = fat_boxes
     boxes = grid[0]
     start, end = work[4][0], work[4][1]
@@ -449,7 +449,7 @@ def _warm() -> None:
     first_wall_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                     table.body_first, state, np.array([0, 1], dtype=np.int64), np.full(2, 0.71), 0.005, grid.arrays,
                     FatBoxes().of(state, 1), np.zeros(1, dtype=np.bool_), np.empty(1, dtype=np.int64), wall.verts,
-                    wall.normals, wall.first, 0.005, 0.001, 0.005, np.empty(2))
+                    wall.normals, wall.first, 0.005, 0.001, 0.005, np.empty(2), toi_work(4))
     first_pair_hit(*args, start, end, *args, still, still, 0.005, 0.001, 0.005, toi_work(4))
     body_pair_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                    table.body_first, np.array([[0, 1]], dtype=np.int64), state, np.array([0, 1], dtype=np.int64),

@@ -7,6 +7,8 @@ from polygolf.engine.physics.grid import bodies_near, body_pairs, by_entity
 from polygolf.engine.physics.jit import kernel
 from polygolf.engine.physics.settings import CONTACT_MARGIN
 
+_NO_PAIRS = np.zeros((0, 2), dtype=np.int64)
+
 
 class BroadphaseProcessor(esper.Processor):
     """Candidate pairs from bounding boxes (`physics.grid`): moving bodies against the walls' grid,
@@ -25,13 +27,14 @@ class BroadphaseProcessor(esper.Processor):
 
     def inputs(self) -> tuple:
         """What `pick` reads besides the state, the shapes, the walls, the fat boxes and the found
-        walls' array: the grid query's scratch, the answer's arrays, whether there are pairs to
-        look for and whether bodies meet each other."""
+        walls' array: the grid query's scratch, the answer's arrays (and no pairs, to hand on when
+        there is one body), whether there are pairs to look for and whether bodies meet each other."""
         bodies = esper.get_components(Body, Collider)
         _, _, rows = self.shapes.current(self.bodies, esper.get_component(Body), bodies)
         if len(self._near) != len(rows):
             self._near, self._first = np.empty(len(rows), dtype=np.int64), np.empty(len(rows) + 1, dtype=np.int64)
-        return self._seen, self._scratch, self._near, self._first, len(bodies) > 1, self.config.collide_bodies
+        return (self._seen, self._scratch, self._near, self._first, _NO_PAIRS, len(bodies) > 1,
+                self.config.collide_bodies)
 
     def process(self) -> None:
         inputs = self.inputs()  # first: it gathers the state
@@ -47,12 +50,12 @@ def pick(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, input
     """The stage on a store's state (`Shapes.packed`, `StaticWorld.packed`, `FatBoxes.of`): the
     candidates (`Candidates.arrays`: bodies with walls near, as entities; their walls in compressed
     rows; body pairs as entities, in entity order however they were found), and `found` (grown if
-    it had to)."""
+    it had to). The walls' rows are views of `first` and `found`: good until the next call."""
     _, _, _, _, _, rows, radius, _, _, ents, _ = shapes
     grid = walls[5]
-    seen, scratch, near, first, several, meet = inputs
+    seen, scratch, near, first, no_pairs, several, meet = inputs
     found, count = bodies_near(state, rows, radius, CONTACT_MARGIN, grid, fat_boxes, seen, scratch, near, first, found)
-    pairs = np.zeros((0, 2), dtype=np.int64)
+    pairs = no_pairs
     if several:
         pairs = by_entity(body_pairs(state, rows, radius, CONTACT_MARGIN, False, meet, False), ents)
-    return (ents[near[:count]], first[:count + 1].copy(), found[:first[count]].copy(), pairs), found
+    return (ents[near[:count]], first[:count + 1], found[:first[count]], pairs), found

@@ -10,7 +10,7 @@ from polygolf.engine.physics.grid import body_pairs, overlapping
 from polygolf.engine.physics.jit import kernel
 from polygolf.engine.physics.motion import rewind
 from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP, TOI_TARGET
-from polygolf.engine.physics.toi import body_pair_hits, first_wall_hits
+from polygolf.engine.physics.toi import body_pair_hits, first_wall_hits, toi_work
 
 
 class CCDProcessor(esper.Processor):
@@ -32,16 +32,21 @@ class CCDProcessor(esper.Processor):
         self._seen, self._found = np.zeros(walls, dtype=np.bool_), np.empty(walls, dtype=np.int64)
         self.shapes, self.bodies, self.fat_boxes = res.shapes, res.bodies, res.fat_boxes
         self._hits = np.empty(0)  # each body's time of impact this substep, kept between substeps
+        self._work: tuple = ()  # the time of impact's scratch, for the widest piece of a body or a wall
+        self._table = None  # the shape table it is for
 
     def inputs(self) -> tuple:
         """What `sweep` reads besides the state, the shapes, the walls and the fat boxes: the grid
-        query's scratch, the times of impact's array, whether there are pairs to sweep and whether
-        bodies meet each other."""
+        query's scratch, the times of impact's array and scratch, whether there are pairs to sweep
+        and whether bodies meet each other."""
         bodies = esper.get_components(Body, Collider)
-        _, _, rows = self.shapes.current(self.bodies, esper.get_component(Body), bodies)
+        _, table, rows = self.shapes.current(self.bodies, esper.get_component(Body), bodies)
         if len(self._hits) != len(rows):
             self._hits = np.empty(len(rows))
-        return self._seen, self._found, self._hits, len(bodies) > 1, self.config.collide_bodies
+        if table is not self._table:
+            widest = max(np.diff(table.pieces.first).max(initial=0), np.diff(self.statics.pieces.first).max(initial=0))
+            self._work, self._table = toi_work(int(widest)), table
+        return self._seen, self._found, self._hits, self._work, len(bodies) > 1, self.config.collide_bodies
 
     def process(self) -> None:
         inputs = self.inputs()  # first: it gathers the state
@@ -56,10 +61,10 @@ def sweep(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inpu
     how many bodies went back."""
     lv, ln, first, reach, body_first, rows, radius, _, _, _, _ = shapes
     (wv, wn, wfirst, _, _), _, _, _, _, grid = walls
-    seen, found, hits, several, _ = inputs
+    seen, found, hits, work, several, _ = inputs
     longest, count = first_wall_hits(lv, ln, first, reach, body_first, state, rows, radius, LINEAR_SLOP, grid,
                                       fat_boxes, seen, found, wv, wn, wfirst, TOI_TARGET, 0.25 * LINEAR_SLOP,
-                                      LINEAR_SLOP, hits)
+                                      LINEAR_SLOP, hits, work)
     # No pair can need sweeping while no body steps half the linear slop.
     if several and longest >= 0.5 * LINEAR_SLOP:
         count += _body_hits(state, shapes, walls, inputs)
@@ -73,7 +78,7 @@ def _body_hits(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple) ->
     crush the ball it meets stalls too. Returns how many pairs hit."""
     lv, ln, first, reach, body_first, rows, radius, thickness, _, _, _ = shapes
     (wv, wn, wfirst, _, _), _, _, _, _, grid = walls
-    seen, found, hits, _, meet = inputs
+    seen, found, hits, _, _, meet = inputs
     pairs = body_pairs(state, rows, radius, TOI_TARGET, True, meet, True)
     arm_hits = np.empty(len(pairs))
     count = body_pair_hits(lv, ln, first, reach, body_first, pairs, state, rows, radius, thickness, meet, LINEAR_SLOP,

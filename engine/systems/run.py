@@ -110,6 +110,20 @@ def put_table(held: HeldList, table: tuple) -> None:
 
 
 @kernel
+def held_candidates(held: HeldList) -> tuple:
+    """The candidates a run keeps (`Candidates.arrays`)."""
+    return held[0][6][0][0]
+
+
+@kernel
+def put_candidates(held: HeldList, candidates: tuple) -> None:
+    """Give a run the candidates to use."""
+    passed = held[0][6]
+    _, table, found = passed[0]
+    passed[0] = (candidates, table, found)
+
+
+@kernel
 def run_stages(held: HeldList, substeps: int, dt: float, stats: np.ndarray, metrics: np.ndarray, measure: bool
                ) -> None:
     """A run's stages (`hold`), in order, `substeps` times, each with its inputs, and
@@ -149,6 +163,11 @@ def run_stages(held: HeldList, substeps: int, dt: float, stats: np.ndarray, metr
     passed[0] = (candidates, table, found)
 
 
+def _no_work() -> tuple:
+    """`toi.toi_work(0)`, made without calling a kernel (this runs at import)."""
+    return np.empty((4, 0, 2)), np.empty(0), np.empty(0), np.empty(0), np.empty((4, 3))
+
+
 def _idle_inputs() -> tuple:
     """Inputs of every stage for a world without it: empty, of the types the stage's own give."""
     ints, floats, flags = np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0, dtype=np.bool_)
@@ -160,8 +179,8 @@ def _idle_inputs() -> tuple:
         (ints, areas.verts, areas.first, areas.boxes, floats, ints.copy()),  # sand
         (ints, areas.verts, areas.first, areas.boxes, floats, ints.copy()),  # ice
         (ints, np.zeros((0, 4))),  # drag
-        (flags, ints, floats, False, True),  # ccd
-        (flags, ints, ints, np.zeros(1, dtype=np.int64), False, True),  # broadphase
+        (flags, ints, floats, _no_work(), False, True),  # ccd
+        (flags, ints, ints, np.zeros(1, dtype=np.int64), np.zeros((0, 2), dtype=np.int64), False, True),  # broadphase
         (False, True),  # narrowphase
         (True, 1, 1, 0, True),  # resolve
     )
@@ -174,23 +193,22 @@ _NO_METRICS = np.zeros(5)
 class StageRun(esper.Processor):
     """Consecutive compiled stages as one processor: `process()` runs them for one substep, as
     esper does; `process(substeps, metrics)` runs whole frames (the world has no other stage).
-    `members` are the stages' processors, which still run alone (a profile, a test).
+    `members` are the stages' processors (whose own `process` runs the same kernels, for a test of
+    a processor alone).
 
     What the run reads is held in a kernel's list (`hold`), made again only when esper's lists
     change (any component added or taken away gives new lists) or the knobs do. The contact table
     stays in it from run to run; `Contacts.table` fetches it when a stage or a tool outside asks,
-    and a table put there from outside is handed back in. The candidates live and die in the run
-    (a run that finds them also uses them)."""
+    and a table put there from outside is handed back in. The candidates live and die in a run that
+    both finds and uses them, else they go through `Candidates` as between processors."""
 
     def __init__(self, res: Resources, members: list[esper.Processor]) -> None:
         codes = [CODES[type(member)] for member in members]
-        if BROADPHASE in codes and NARROWPHASE not in codes:
-            raise ValueError("a run that finds candidates must also use them")
         self.res, self.members = res, members
         self.name = "+".join(member.name for member in members)
         self.codes = np.array(codes, dtype=np.int64)
         self._by_code = dict(zip(codes, members, strict=True))
-        self._narrowphase = NARROWPHASE in self._by_code
+        self._finds, self._uses = BROADPHASE in codes, NARROWPHASE in codes
         self._key: tuple = ()
         self._held = None
 
@@ -221,29 +239,40 @@ class StageRun(esper.Processor):
         self._hold()
         if res.contacts.keeper is not self:  # a table put there since: go on from it
             put_table(self._held, res.contacts.table.arrays)
+        if self._uses and not self._finds:
+            put_candidates(self._held, res.candidates.arrays)
         run_stages(self._held, substeps, res.config.dt, res.stats.values,
                    _NO_METRICS if metrics is None else metrics, metrics is not None)
-        res.contacts.keep(self, fresh=self._narrowphase)
+        res.contacts.keep(self, fresh=self._uses)
+        if self._finds and not self._uses:
+            found = res.candidates
+            found.near, found.near_first, found.near_found, found.pair_ents = held_candidates(self._held)
 
 
 def schedule(res: Resources, processors: list[esper.Processor]) -> list[esper.Processor]:
-    """The processors as esper runs them: each stretch of two or more compiled stages as one run."""
+    """The processors as esper runs them: each stretch of compiled stages as one run."""
     out: list[esper.Processor] = []
     stretch: list[esper.Processor] = []
     for proc in [*processors, None]:
         if proc is not None and type(proc) in CODES:
             stretch.append(proc)
             continue
-        out += [StageRun(res, stretch)] if len(stretch) > 1 else stretch
+        if stretch:
+            out.append(StageRun(res, stretch))
         stretch = []
         if proc is not None:
             out.append(proc)
     return out
 
 
+def one_by_one(res: Resources, processors: list[esper.Processor]) -> list[esper.Processor]:
+    """The processors as a profile runs them: each compiled stage as a run of its own."""
+    return [StageRun(res, [proc]) if type(proc) in CODES else proc for proc in processors]
+
+
 @warm_up("compiled stages")
 def _warm() -> None:
-    """A run of every stage, and every stage's kernel alone (a stage between golf stages, a profile)."""
+    """A run of every stage, and what goes in and out of one."""
     table = ContactTable.empty().arrays
     candidates = (np.zeros(0, dtype=np.int64), np.zeros(1, dtype=np.int64), np.zeros(0, dtype=np.int64),
                   np.zeros((0, 2), dtype=np.int64))
@@ -257,12 +286,6 @@ def _warm() -> None:
     put_table(held, table)
     run_stages(held, 1, dt, stats, np.zeros(5), True)
     held_table(held)
+    put_candidates(held, candidates)
+    held_candidates(held)
     measure_substep(state, stats, np.zeros(5))
-    integrate(state, table[0], IDLE[INTEGRATE], dt)
-    push_on_slopes(state, IDLE[SLOPE], dt)
-    scale_on_surfaces(state, IDLE[SAND])
-    sweep(state, shapes.packed, walls, fat_boxes, IDLE[CCD])
-    pick(state, shapes.packed, walls, fat_boxes, IDLE[BROADPHASE], found)
-    touch(state, shapes.packed, walls, IDLE[NARROWPHASE], candidates, table, stats, dt)
-    resolve(state, walls, IDLE[RESOLVE], table, dt)
-    bounce(state, walls, table)

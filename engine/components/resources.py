@@ -170,33 +170,40 @@ class Candidates:
                            else np.zeros(0, dtype=np.int64))
 
 
+_NO_CONTACTS = ContactTable.empty()
+
+
 class Contacts:
     """Narrowphase -> resolve, impacts, restitution, bumper and rest detection: this substep's
     contacts (`contact.ContactTable`), left for the next substep's warm start.
 
     A run of compiled stages (`systems.run.StageRun`) keeps the table it makes inside the run
-    (`keeper`); `table` fetches it from there only when someone asks."""
+    (`keeper`), and says how many manifolds it has (`size`); `table` fetches it from there only
+    when someone asks and there is something to fetch."""
 
-    __slots__ = ("_table", "keeper", "_stale")
+    __slots__ = ("_table", "keeper", "_stale", "size")
 
     def __init__(self, table: ContactTable | None = None) -> None:
         self._table = table if table is not None else ContactTable.empty()
         self.keeper = None  # the run holding the newest table, which `table` then shares or fetches
         self._stale = False
+        self.size = len(self._table)  # manifolds in the newest table
 
     @property
     def table(self) -> ContactTable:
         if self._stale:
-            self._table, self._stale = self.keeper.table(), False
+            self._table = self.keeper.table() if self.size else _NO_CONTACTS
+            self._stale = False
         return self._table
 
     @table.setter
     def table(self, table: ContactTable) -> None:
-        self._table, self.keeper, self._stale = table, None, False
+        self._table, self.keeper, self._stale, self.size = table, None, False, len(table)
 
-    def keep(self, run: object, fresh: bool = False) -> None:
-        """`run` holds the newest table: a new one (`fresh`: fetched when asked for), or the one here."""
-        self.keeper = run
+    def keep(self, run: object, size: int, fresh: bool = False) -> None:
+        """`run` holds the newest table, of `size` manifolds: a new one (`fresh`: fetched when asked
+        for), or the one here."""
+        self.keeper, self.size = run, size
         self._stale = self._stale or fresh
 
     @property

@@ -6,8 +6,9 @@ Nothing here is a second engine: the run calls each stage's own kernel (the one 
 `process` calls) with the processor's own `inputs()`, in the stage table's order. Between stages
 it hands on what they share as the resources do between processors: the candidates (broadphase to
 narrowphase), the contact table (narrowphase to the solver, restitution and the next substep's
-rest detection and warm start), the stats. A stage another kind of work needs (the golf rules,
-anything with events for Python) stays a processor of its own and ends a run.
+rest detection and warm start), the stats. The impacts a run hears are told to the listener when it
+ends, in order. A stage that needs Python (the golf rules, which change components and emit golf
+events) stays a processor of its own and ends a run.
 
 Every stage kind has a place in the inputs tuple; a stage the world does not run gets `IDLE` inputs
 of the same types, so one compiled `run_stages` serves every world.
@@ -39,6 +40,7 @@ from polygolf.engine.systems.ccd import CCDProcessor, sweep
 from polygolf.engine.systems.drag import DragProcessor
 from polygolf.engine.systems.gravity import GravityProcessor
 from polygolf.engine.systems.ice import IceProcessor
+from polygolf.engine.systems.impacts import HEARD_COLUMNS, ImpactsProcessor, hear
 from polygolf.engine.systems.integrate import IntegrateProcessor, integrate
 from polygolf.engine.systems.narrowphase import NarrowphaseProcessor, contact_table, touch
 from polygolf.engine.systems.resolve import ResolveProcessor, resolve
@@ -49,12 +51,13 @@ from polygolf.engine.systems.spin import SpinProcessor
 from polygolf.engine.systems.surface import scale_on_surfaces
 
 # Stage codes, and the place of each stage's inputs in the inputs tuple (the last two have none).
-INTEGRATE, GRAVITY, SLOPE, SAND, ICE, DRAG, CCD, BROADPHASE, NARROWPHASE, RESOLVE, RESTITUTION, SPIN = range(12)
+(INTEGRATE, GRAVITY, SLOPE, SAND, ICE, DRAG, CCD, BROADPHASE, NARROWPHASE, RESOLVE, IMPACTS, RESTITUTION,
+ SPIN) = range(13)
 CODES: dict[type[esper.Processor], int] = {
     IntegrateProcessor: INTEGRATE, GravityProcessor: GRAVITY, SlopeProcessor: SLOPE, SandProcessor: SAND,
     IceProcessor: ICE, DragProcessor: DRAG, CCDProcessor: CCD, BroadphaseProcessor: BROADPHASE,
-    NarrowphaseProcessor: NARROWPHASE, ResolveProcessor: RESOLVE, RestitutionProcessor: RESTITUTION,
-    SpinProcessor: SPIN,
+    NarrowphaseProcessor: NARROWPHASE, ResolveProcessor: RESOLVE, ImpactsProcessor: IMPACTS,
+    RestitutionProcessor: RESTITUTION, SpinProcessor: SPIN,
 }
 
 # Columns of a run's metrics (`Simulation.Metrics`, as `measure_substep` keeps them).
@@ -125,9 +128,10 @@ def put_candidates(held: HeldList, candidates: tuple) -> None:
 
 @kernel
 def run_stages(held: HeldList, substeps: int, dt: float, stats: np.ndarray, metrics: np.ndarray, measure: bool
-               ) -> None:
+               ) -> int:
     """A run's stages (`hold`), in order, `substeps` times, each with its inputs, and
-    `measure_substep` after each substep with `measure`."""
+    `measure_substep` after each substep with `measure`. Returns how many manifolds the contact
+    table it holds now has."""
     codes, state, shapes, walls, fat_boxes, inputs, passed = held[0]
     candidates, table, found = passed[0]
     for _ in range(substeps):
@@ -156,11 +160,14 @@ def run_stages(held: HeldList, substeps: int, dt: float, stats: np.ndarray, metr
                 table = touch(state, shapes, walls, inputs[NARROWPHASE], candidates, table, stats, dt)
             elif code == RESOLVE:
                 stats[COLD_RESTARTS] += resolve(state, walls, inputs[RESOLVE], table, dt)
+            elif code == IMPACTS:
+                hear(table, inputs[IMPACTS])
             elif code == RESTITUTION:
                 stats[BOUNCES] += bounce(state, walls, table)
         if measure:
             measure_substep(state, stats, metrics)
     passed[0] = (candidates, table, found)
+    return len(table[1])
 
 
 def _no_work() -> tuple:
@@ -183,6 +190,7 @@ def _idle_inputs() -> tuple:
         (flags, ints, ints, np.zeros(1, dtype=np.int64), np.zeros((0, 2), dtype=np.int64), False, True),  # broadphase
         (False, True),  # narrowphase
         (True, 1, 1, 0, True),  # resolve
+        (flags, np.zeros((1, HEARD_COLUMNS)), np.zeros(1, dtype=np.int64)),  # impacts
     )
 
 
@@ -209,8 +217,10 @@ class StageRun(esper.Processor):
         self.codes = np.array(codes, dtype=np.int64)
         self._by_code = dict(zip(codes, members, strict=True))
         self._finds, self._uses = BROADPHASE in codes, NARROWPHASE in codes
+        self._impacts = self._by_code.get(IMPACTS)
         self._key: tuple = ()
         self._held = None
+        self._holds = 0  # manifolds in the table it holds
 
     def _hold(self) -> None:
         """Make the held list again if esper's lists or the knobs changed."""
@@ -228,7 +238,8 @@ class StageRun(esper.Processor):
                           res.fat_boxes.of(state, len(res.statics.grid)), inputs, res.candidates.arrays,
                           table.arrays, np.zeros(16, dtype=np.int64))
         self._key = key
-        res.contacts.keep(self)
+        self._holds = len(table)
+        res.contacts.keep(self, self._holds)
 
     def table(self) -> ContactTable:
         """The contact table this run holds."""
@@ -237,13 +248,16 @@ class StageRun(esper.Processor):
     def process(self, substeps: int = 1, metrics: np.ndarray | None = None) -> None:
         res = self.res
         self._hold()
-        if res.contacts.keeper is not self:  # a table put there since: go on from it
-            put_table(self._held, res.contacts.table.arrays)
+        contacts = res.contacts
+        if contacts.keeper is not self and (contacts.size or self._holds):  # a table put there since
+            put_table(self._held, contacts.table.arrays)
         if self._uses and not self._finds:
             put_candidates(self._held, res.candidates.arrays)
-        run_stages(self._held, substeps, res.config.dt, res.stats.values,
-                   _NO_METRICS if metrics is None else metrics, metrics is not None)
-        res.contacts.keep(self, fresh=self._uses)
+        self._holds = run_stages(self._held, substeps, res.config.dt, res.stats.values,
+                                 _NO_METRICS if metrics is None else metrics, metrics is not None)
+        contacts.keep(self, self._holds, fresh=self._uses)
+        if self._impacts is not None:
+            self._impacts.tell()
         if self._finds and not self._uses:
             found = res.candidates
             found.near, found.near_first, found.near_found, found.pair_ents = held_candidates(self._held)

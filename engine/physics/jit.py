@@ -45,6 +45,14 @@ def kernel(fn: F) -> F:
     return numba.njit(cache=True, nogil=True)(fn)
 
 
+def inlined_kernel(fn: F) -> F:
+    """A kernel numba inlines where another kernel calls it (a stage's kernel inside a run of
+    stages): compiled once as part of its caller rather than once more on its own."""
+    if numba is None:
+        return fn
+    return numba.njit(cache=True, nogil=True, inline="always")(fn)
+
+
 def warm_up(label: str) -> Callable[[Callable[[], None]], Callable[[], None]]:
     """Register a function that calls a module's kernels once with the types the engine uses."""
     def register(fn: Callable[[], None]) -> Callable[[], None]:

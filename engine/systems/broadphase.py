@@ -4,7 +4,7 @@ import numpy as np
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.grid import bodies_near, body_pairs, by_entity
-from polygolf.engine.physics.jit import kernel
+from polygolf.engine.physics.jit import inlined_kernel
 from polygolf.engine.physics.settings import CONTACT_MARGIN
 
 _NO_PAIRS = np.zeros((0, 2), dtype=np.int64)
@@ -44,7 +44,7 @@ class BroadphaseProcessor(esper.Processor):
                                                        self.fat_boxes.of(state, len(self._seen)), inputs, self.found)
 
 
-@kernel
+@inlined_kernel
 def pick(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple, found: np.ndarray
          ) -> tuple[tuple, np.ndarray]:
     """The stage on a store's state (`Shapes.packed`, `StaticWorld.packed`, `FatBoxes.of`): the

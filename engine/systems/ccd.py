@@ -7,7 +7,7 @@ from polygolf.engine.physics.body import ANGLE, ANGLE0, INV_MASS, X0, Y0, X, Y
 from polygolf.engine.physics.collide import max_separation
 from polygolf.engine.physics.geometry import pose_piece
 from polygolf.engine.physics.grid import body_pairs, overlapping
-from polygolf.engine.physics.jit import kernel
+from polygolf.engine.physics.jit import inlined_kernel, kernel
 from polygolf.engine.physics.motion import rewind
 from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP, TOI_TARGET
 from polygolf.engine.physics.toi import body_pair_hits, first_wall_hits, toi_work
@@ -55,7 +55,7 @@ class CCDProcessor(esper.Processor):
                                      self.fat_boxes.of(state, len(self._seen)), inputs)
 
 
-@kernel
+@inlined_kernel
 def sweep(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple) -> int:
     """The stage on a store's state (`Shapes.packed`, `StaticWorld.packed`, `FatBoxes.of`); returns
     how many bodies went back."""

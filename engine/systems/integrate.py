@@ -4,7 +4,7 @@ import numpy as np
 from polygolf.engine.components import Body, Drag
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.body import Selection
-from polygolf.engine.physics.jit import kernel
+from polygolf.engine.physics.jit import inlined_kernel
 from polygolf.engine.physics.motion import advance, mark_touching
 from polygolf.engine.physics.settings import REST_ANGULAR, REST_LINEAR, REST_SPEED_CAP, TIME_TO_REST
 
@@ -46,7 +46,7 @@ class IntegrateProcessor(esper.Processor):
         integrate(self.bodies.state, self.contacts.table.ents, inputs, self.config.dt)
 
 
-@kernel
+@inlined_kernel
 def integrate(state: np.ndarray, touching: np.ndarray, inputs: tuple, dt: float) -> None:
     """The stage on a store's state, given this substep's contacts' entity pairs (`touching`)."""
     settles, dragged, touched, lookup = inputs

@@ -6,7 +6,7 @@ from polygolf.engine.components import Collider
 from polygolf.engine.components.resources import PENETRATION, Resources
 from polygolf.engine.physics.body import Body, BodyStore
 from polygolf.engine.physics.contact import KEY_COLUMNS, MANIFOLD_COLUMNS, POINT_COLUMNS, ContactTable, find_contacts
-from polygolf.engine.physics.jit import kernel
+from polygolf.engine.physics.jit import inlined_kernel
 from polygolf.engine.physics.settings import CONTACT_MARGIN, RESTITUTION_THRESHOLD
 
 
@@ -54,7 +54,7 @@ def contact_table(columns: tuple, store: BodyStore, static: Body) -> ContactTabl
     return ContactTable(*columns, store, static) if len(columns[0]) else _EMPTY
 
 
-@kernel
+@inlined_kernel
 def touch(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple, candidates: tuple, old: tuple,
           stats: np.ndarray, dt: float) -> tuple:
     """The stage on a store's state (`Shapes.packed`, `StaticWorld.packed`): the new table's

@@ -3,7 +3,7 @@ import numpy as np
 
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics import solver
-from polygolf.engine.physics.jit import kernel
+from polygolf.engine.physics.jit import inlined_kernel
 
 
 class ResolveProcessor(esper.Processor):
@@ -27,7 +27,7 @@ class ResolveProcessor(esper.Processor):
                                                 self.config.dt)
 
 
-@kernel
+@inlined_kernel
 def resolve(state: np.ndarray, walls: tuple, inputs: tuple, table: tuple, dt: float) -> int:
     """The stage on a store's state (the static world's row from `StaticWorld.packed`); returns how
     many islands were solved cold."""

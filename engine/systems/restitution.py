@@ -3,7 +3,7 @@ import numpy as np
 
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics import solver
-from polygolf.engine.physics.jit import kernel
+from polygolf.engine.physics.jit import inlined_kernel
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 
 
@@ -22,7 +22,7 @@ class RestitutionProcessor(esper.Processor):
             self.stats.bounces += bounce(table.store.state, self.statics.packed, table.arrays)
 
 
-@kernel
+@inlined_kernel
 def bounce(state: np.ndarray, walls: tuple, table: tuple) -> int:
     """The stage on a store's state (the static world's row from `StaticWorld.packed`); returns how
     many points bounced."""

@@ -225,10 +225,11 @@ class StageRun(esper.Processor):
     def _hold(self) -> None:
         """Make the held list again if esper's lists or the knobs changed."""
         res = self.res
-        everyone = esper.get_component(Body)
-        key = (everyone, res.config.knobs, res.config.gravity)
-        if self._key and all(a is b for a, b in zip(key, self._key, strict=True)):
+        everyone, config = esper.get_component(Body), res.config
+        key = self._key
+        if key and everyone is key[0] and config.knobs is key[1] and config.gravity is key[2]:
             return
+        key = (everyone, config.knobs, config.gravity)
         table = res.contacts.table  # (fetched from the list about to go, if it is this run's)
         res.shapes.current(res.bodies, everyone, esper.get_components(Body, Collider))
         inputs = tuple(self._by_code[code].inputs() if code in self._by_code else IDLE[code]

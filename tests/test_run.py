@@ -1,6 +1,5 @@
 """Runs of compiled stages (`systems.run`): a world steps through one kernel call a run, and that must
-be exactly what its processors do one by one, each with its own `process`, and what a profile does
-(each compiled stage a run of its own)."""
+be exactly what its processors do one by one, each with its own `process` (as a profile does)."""
 
 from __future__ import annotations
 
@@ -116,7 +115,7 @@ def test_a_table_put_from_outside_is_what_the_run_goes_on_from():
 
 
 def test_candidates_go_between_runs_as_between_processors():
-    """A run that finds candidates but leaves them to another (a profile) hands them on."""
+    """A run that finds candidates but leaves them to another hands them on, as processors do."""
     with scene_sim("pile") as sim:
         sim.step(40)
         broadphase = next(p for p in sim.processors if p.name == "broadphase")

@@ -14,7 +14,7 @@ from polygolf.engine.components import Body
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.motion import kinetic_energy
 from polygolf.engine.physics.presets import Knobs
-from polygolf.engine.systems.run import StageRun, measure_substep, one_by_one, schedule
+from polygolf.engine.systems.run import StageRun, measure_substep, schedule
 
 
 @dataclass(slots=True)
@@ -69,7 +69,6 @@ class Simulation:
         for priority, proc in enumerate(reversed(scheduled)):
             esper.add_processor(proc, priority=priority)
         self._whole = scheduled[0] if len(scheduled) == 1 and isinstance(scheduled[0], StageRun) else None
-        self._one_by_one = one_by_one(res, self.processors)  # for a profile: each stage timed on its own
         energy = self.kinetic_energy()
         self.metrics.initial_energy = self.metrics.max_energy = self.metrics.final_energy = energy
 
@@ -81,7 +80,8 @@ class Simulation:
 
     def step(self, frames: int = 1, measure: bool = True, profile: bool = False) -> None:
         """Advance `frames` frames. `measure` tracks energy, penetration and NaN after every substep;
-        `profile` times each processor (slower: it bypasses esper.process)."""
+        `profile` times each processor, each calling its own kernels (slower: it bypasses esper.process
+        and the runs of compiled stages, and counts each stage's own call)."""
         esper.switch_world(self.world)
         metrics = self.metrics
         substeps = self.res.config.knobs.substeps
@@ -97,7 +97,7 @@ class Simulation:
                 continue
             for _ in range(substeps):
                 if profile:
-                    for proc in self._one_by_one:
+                    for proc in self.processors:
                         t0 = time.perf_counter()
                         proc.process()
                         times[proc.name] = times.get(proc.name, 0.0) + time.perf_counter() - t0

@@ -280,14 +280,9 @@ def schedule(res: Resources, processors: list[esper.Processor]) -> list[esper.Pr
     return out
 
 
-def one_by_one(res: Resources, processors: list[esper.Processor]) -> list[esper.Processor]:
-    """The processors as a profile runs them: each compiled stage as a run of its own."""
-    return [StageRun(res, [proc]) if type(proc) in CODES else proc for proc in processors]
-
-
 @warm_up("compiled stages")
 def _warm() -> None:
-    """A run of every stage, and what goes in and out of one."""
+    """A run of every stage, what goes in and out of one, and each stage's kernel alone."""
     table = ContactTable.empty().arrays
     candidates = (np.zeros(0, dtype=np.int64), np.zeros(1, dtype=np.int64), np.zeros(0, dtype=np.int64),
                   np.zeros((0, 2), dtype=np.int64))
@@ -304,3 +299,13 @@ def _warm() -> None:
     put_candidates(held, candidates)
     held_candidates(held)
     measure_substep(state, stats, np.zeros(5))
+    # Each stage's kernel on its own too, as its processor calls it (a profile, a processor alone).
+    integrate(state, table[0], IDLE[INTEGRATE], dt)
+    push_on_slopes(state, IDLE[SLOPE], dt)
+    scale_on_surfaces(state, IDLE[SAND])
+    sweep(state, shapes.packed, walls, fat_boxes, IDLE[CCD])
+    pick(state, shapes.packed, walls, fat_boxes, IDLE[BROADPHASE], found)
+    touch(state, shapes.packed, walls, IDLE[NARROWPHASE], candidates, table, stats, dt)
+    resolve(state, walls, IDLE[RESOLVE], table, dt)
+    hear(table, IDLE[IMPACTS])
+    bounce(state, walls, table)

@@ -84,44 +84,43 @@ def measure_substep(state: np.ndarray, stats: np.ndarray, metrics: np.ndarray) -
 
 @kernel
 def hold(codes: np.ndarray, state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple,
-         candidates: tuple, table: tuple, found: np.ndarray) -> HeldList:
+         candidates: tuple, table: tuple, found: np.ndarray) -> tuple[HeldList, HeldList]:
     """What a run keeps between calls, in one list (passing it costs one argument, not a hundred):
     its stage codes, a store's state; what the stages share, the shapes (`Shapes.packed`), the
     walls (`StaticWorld.packed`) and their fat boxes; each stage's inputs; and in a list of its own
     (what changes from substep to substep) the candidates (`Candidates.arrays`), the contact table
     (`ContactTable.arrays`: the next run's warm start) and the broadphase's found-walls array
-    (grown when it must be)."""
+    (grown when it must be). Returns both lists: what goes in and out of the run is reached through
+    the small one, whose type is quick to compile."""
     passed = HeldList()
     passed.append((candidates, table, found))
     held = HeldList()
     held.append((codes, state, shapes, walls, fat_boxes, inputs, passed))
-    return held
+    return held, passed
 
 
 @kernel
-def held_table(held: HeldList) -> tuple:
-    """The contact table a run keeps (`ContactTable.arrays`)."""
-    return held[0][6][0][1]
+def held_table(passed: HeldList) -> tuple:
+    """The contact table a run keeps (`ContactTable.arrays`), from its passed list (`hold`)."""
+    return passed[0][1]
 
 
 @kernel
-def put_table(held: HeldList, table: tuple) -> None:
+def put_table(passed: HeldList, table: tuple) -> None:
     """Give a run the contact table to go on from."""
-    passed = held[0][6]
     candidates, _, found = passed[0]
     passed[0] = (candidates, table, found)
 
 
 @kernel
-def held_candidates(held: HeldList) -> tuple:
+def held_candidates(passed: HeldList) -> tuple:
     """The candidates a run keeps (`Candidates.arrays`)."""
-    return held[0][6][0][0]
+    return passed[0][0]
 
 
 @kernel
-def put_candidates(held: HeldList, candidates: tuple) -> None:
+def put_candidates(passed: HeldList, candidates: tuple) -> None:
     """Give a run the candidates to use."""
-    passed = held[0][6]
     _, table, found = passed[0]
     passed[0] = (candidates, table, found)
 
@@ -219,7 +218,7 @@ class StageRun(esper.Processor):
         self._finds, self._uses = BROADPHASE in codes, NARROWPHASE in codes
         self._impacts = self._by_code.get(IMPACTS)
         self._key: tuple = ()
-        self._held = None
+        self._held = self._passed = None
         self._holds = 0  # manifolds in the table it holds
 
     def _hold(self) -> None:
@@ -235,25 +234,25 @@ class StageRun(esper.Processor):
         inputs = tuple(self._by_code[code].inputs() if code in self._by_code else IDLE[code]
                        for code in range(len(IDLE)))
         state = res.bodies.state
-        self._held = hold(self.codes, state, res.shapes.packed, res.statics.packed,
-                          res.fat_boxes.of(state, len(res.statics.grid)), inputs, res.candidates.arrays,
-                          table.arrays, np.zeros(16, dtype=np.int64))
+        self._held, self._passed = hold(self.codes, state, res.shapes.packed, res.statics.packed,
+                                        res.fat_boxes.of(state, len(res.statics.grid)), inputs,
+                                        res.candidates.arrays, table.arrays, np.zeros(16, dtype=np.int64))
         self._key = key
         self._holds = len(table)
         res.contacts.keep(self, self._holds)
 
     def table(self) -> ContactTable:
         """The contact table this run holds."""
-        return contact_table(held_table(self._held), self.res.bodies, self.res.statics.body)
+        return contact_table(held_table(self._passed), self.res.bodies, self.res.statics.body)
 
     def process(self, substeps: int = 1, metrics: np.ndarray | None = None) -> None:
         res = self.res
         self._hold()
         contacts = res.contacts
         if contacts.keeper is not self and (contacts.size or self._holds):  # a table put there since
-            put_table(self._held, contacts.table.arrays)
+            put_table(self._passed, contacts.table.arrays)
         if self._uses and not self._finds:
-            put_candidates(self._held, res.candidates.arrays)
+            put_candidates(self._passed, res.candidates.arrays)
         self._holds = run_stages(self._held, substeps, res.config.dt, res.stats.values,
                                  _NO_METRICS if metrics is None else metrics, metrics is not None)
         contacts.keep(self, self._holds, fresh=self._uses)
@@ -261,7 +260,7 @@ class StageRun(esper.Processor):
             self._impacts.tell()
         if self._finds and not self._uses:
             found = res.candidates
-            found.near, found.near_first, found.near_found, found.pair_ents = held_candidates(self._held)
+            found.near, found.near_first, found.near_found, found.pair_ents = held_candidates(self._passed)
 
 
 def schedule(res: Resources, processors: list[esper.Processor]) -> list[esper.Processor]:
@@ -291,13 +290,13 @@ def _warm() -> None:
     walls = StaticWorld.of([], 1.0).packed
     state, dt, stats = np.zeros((0, len(COLUMNS))), 1.0 / 240.0, np.zeros(4)
     fat_boxes, found = FatBoxes().of(state, 0), np.zeros(16, dtype=np.int64)
-    held = hold(np.array(sorted(CODES.values()), dtype=np.int64), state, shapes.packed, walls, fat_boxes, IDLE,
-                candidates, table, found)
-    put_table(held, table)
+    held, passed = hold(np.array(sorted(CODES.values()), dtype=np.int64), state, shapes.packed, walls, fat_boxes,
+                        IDLE, candidates, table, found)
+    put_table(passed, table)
     run_stages(held, 1, dt, stats, np.zeros(5), True)
-    held_table(held)
-    put_candidates(held, candidates)
-    held_candidates(held)
+    held_table(passed)
+    put_candidates(passed, candidates)
+    held_candidates(passed)
     measure_substep(state, stats, np.zeros(5))
     # Each stage's kernel on its own too, as its processor calls it (a profile, a processor alone).
     integrate(state, table[0], IDLE[INTEGRATE], dt)

@@ -35,7 +35,7 @@ SCENE = SCENES_DIR / "flat-wall.yaml"
 # parallel shots on holes).
 INTERPRETED = ["tests/test_collide.py", "tests/test_contact.py", "tests/test_hard_cases.py", "tests/test_systems.py",
                "tests/test_grid.py", "tests/test_property.py", "tests/test_shots.py", "tests/test_solver.py",
-               "tests/test_bodies.py", "tests/test_run.py"]
+               "tests/test_bodies.py"]
 
 
 class Terminal(io.StringIO):

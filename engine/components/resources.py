@@ -170,7 +170,7 @@ class Candidates:
                            else np.zeros(0, dtype=np.int64))
 
 
-_NO_CONTACTS = ContactTable.empty()
+NO_CONTACTS = ContactTable.empty()  # the table of a substep where nothing touches (shared: never written)
 
 
 class Contacts:
@@ -192,7 +192,7 @@ class Contacts:
     @property
     def table(self) -> ContactTable:
         if self._stale:
-            self._table = self.keeper.table() if self.size else _NO_CONTACTS
+            self._table = self.keeper.table() if self.size else NO_CONTACTS
             self._stale = False
         return self._table
 
@@ -234,27 +234,19 @@ class Stats:
     def __init__(self) -> None:
         self.values = np.zeros(4)
 
-    def _get(column: int) -> property:  # noqa: N805 (a property factory, used in this class body only)
-        def get(self: Stats) -> float:
-            return float(self.values[column])
+    def _column(column: int, cast: type) -> property:  # noqa: N805 (a property factory for this class body)
+        def get(self: Stats) -> float | int:
+            return cast(self.values[column])
 
         def put(self: Stats, value: float) -> None:
             self.values[column] = value
         return property(get, put)
 
-    def _count(column: int) -> property:  # noqa: N805
-        def get(self: Stats) -> int:
-            return int(self.values[column])
-
-        def put(self: Stats, value: int) -> None:
-            self.values[column] = value
-        return property(get, put)
-
-    max_penetration = _get(PENETRATION)
-    bounces = _count(BOUNCES)
-    toi_hits = _count(TOI_HITS)
-    cold_restarts = _count(COLD_RESTARTS)  # substeps whose warm start would have added energy
-    del _get, _count
+    max_penetration = _column(PENETRATION, float)
+    bounces = _column(BOUNCES, int)
+    toi_hits = _column(TOI_HITS, int)
+    cold_restarts = _column(COLD_RESTARTS, int)  # substeps whose warm start would have added energy
+    del _column
 
 
 HEARD_LIMIT = 256  # events and impacts kept for a listener that has not drained them (a bound, not a budget)

@@ -3,7 +3,7 @@ import esper
 import numpy as np
 
 from polygolf.engine.components import Collider
-from polygolf.engine.components.resources import PENETRATION, Resources
+from polygolf.engine.components.resources import NO_CONTACTS, PENETRATION, Resources
 from polygolf.engine.physics.body import Body, BodyStore
 from polygolf.engine.physics.contact import KEY_COLUMNS, MANIFOLD_COLUMNS, POINT_COLUMNS, ContactTable, find_contacts
 from polygolf.engine.physics.jit import inlined_kernel
@@ -38,7 +38,7 @@ class NarrowphaseProcessor(esper.Processor):
     def process(self) -> None:
         candidates = self.candidates
         if not len(candidates.near) and not len(candidates.pair_ents):
-            self.contacts.table = _EMPTY  # nothing near: no kernel call (most substeps of a lone ball)
+            self.contacts.table = NO_CONTACTS  # nothing near: no kernel call (most substeps of a lone ball)
             return
         inputs = self.inputs()  # first: it gathers the state
         self.contacts.table = contact_table(
@@ -46,12 +46,9 @@ class NarrowphaseProcessor(esper.Processor):
                   self.contacts.table.arrays, self.stats.values, self.config.dt), self.bodies, self.statics.body)
 
 
-_EMPTY = ContactTable.empty()
-
-
 def contact_table(columns: tuple, store: BodyStore, static: Body) -> ContactTable:
     """The table object for `touch`'s columns."""
-    return ContactTable(*columns, store, static) if len(columns[0]) else _EMPTY
+    return ContactTable(*columns, store, static) if len(columns[0]) else NO_CONTACTS
 
 
 @inlined_kernel

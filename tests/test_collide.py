@@ -68,3 +68,44 @@ def test_time_of_impact_head_on_and_miss():
     assert 2.0 - 4.0 * t - 0.1 == pytest.approx(0.03, abs=0.0011)
     # Passing above the wall's end: no impact.
     assert toi((2.0, 3.0, 0.0), (-2.0, 3.0, 0.0)) >= 1.0
+
+
+def test_wall_pieces_a_body_stays_clear_of_are_passed_over_with_the_same_rows():
+    """`bodies_wall_contacts` skips the near pieces its bounding circle stays more than the margin
+    clear of: its rows must be those of `wall_contacts` asked about every near piece, for a hexagon
+    and a star ({5/2}: two convex pieces) anywhere about slanted and square wall pieces."""
+    from polygolf.engine.physics.collide import BODY, ROW, bodies_wall_contacts, wall_contacts
+    from polygolf.engine.physics.geometry import ShapeTable, pose_piece
+
+    rng = np.random.default_rng(12)
+    pieces = [box(2.0, 0.1), [(1.0, 0.5), (2.5, 0.5), (1.0, 2.0)], [(-2.5, 0.4), (-1.5, 0.4), (-1.5, 1.4), (-2.5, 1.4)]]
+    wall = ConvexSet.of(pieces, [polygon.edge_normals(p) for p in pieces])
+    flags = np.zeros(len(wall.verts), dtype=np.bool_)
+    walls = (wall.verts, wall.normals, wall.first, flags, flags.copy())
+    star = polygon.star_polygon(5, 2, 0.45)
+    shapes = [polygon.regular_polygon(6, 0.45), star]
+    table = ShapeTable.of([ConvexSet.of(list(polygon.convex_pieces(s)), [polygon.edge_normals(p)
+                                        for p in polygon.convex_pieces(s)]) for s in shapes])
+    lv, ln, first, reach, body_first = (table.pieces.verts, table.pieces.normals, table.pieces.first,
+                                        table.pieces.reach, table.body_first)
+    radius = np.array([polygon.bounding_radius(s) for s in shapes])
+    every = np.arange(len(pieces), dtype=np.int64)
+    dt, margin, touched, apart = 1.0 / 240.0, 0.01, 0, 0
+    for _ in range(400):
+        q = int(rng.integers(2))
+        state = np.array([rng.uniform(-3.0, 3.0), rng.uniform(-0.8, 2.2), rng.uniform(-3.2, 3.2),
+                          *rng.normal(0.0, 3.0, 2), rng.normal(0.0, 5.0)])
+        batch = bodies_wall_contacts(lv, ln, first, reach, body_first, np.array([q]), radius, state[None, :],
+                                     np.zeros(1, dtype=np.bool_), np.array([0, len(pieces)]), every, walls, dt,
+                                     margin)
+        p0, p1 = body_first[q], body_first[q + 1]
+        v0, v1 = first[p0], first[p1]
+        verts, normals = np.zeros((len(lv), 2)), np.zeros((len(lv), 2))
+        pose_piece(lv, ln, v0, v1, state[0], state[1], state[2], verts[v0:v1], normals[v0:v1])
+        out = np.empty((2 * (p1 - p0) * len(pieces), ROW))
+        made = wall_contacts(verts, normals, lv, ln, first[p0:p1 + 1], reach[p0:p1], *state, dt, False, walls, every,
+                             margin, out, np.empty((3, 3)), toi_work(6))
+        assert np.array_equal(batch[:, :BODY], out[:made, :BODY])
+        touched += made > 0
+        apart += made == 0
+    assert touched > 20 and apart > 20  # both kinds of pose were tried

@@ -13,6 +13,7 @@ are never a reference face, `hidden` vertices never a contact point.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -29,6 +30,9 @@ from polygolf.engine.physics.toi import reaches_wall, toi_work, widest
 _REFERENCE_TOLERANCE = 5e-4
 # At a seam, the wall's face replaces A's as the reference only if it is about as near (m).
 _SEAM_SWITCH = 0.005
+# m: rounding room for `_circle_beyond` (a vertex posed in floating point may stand a hair outside
+# its body's bounding circle).
+_CIRCLE_SLACK = 1e-9
 
 # Columns of a contact row written by `collide_convex` / `collide_sets` (BODY: by `bodies_wall_contacts`).
 X, Y, SEP, FEATURE, REF_IS_A, CLIP_X, CLIP_Y, FACE_X, FACE_Y, NX, NY, PIECE_A, PIECE_B, BODY = range(14)
@@ -240,14 +244,33 @@ def wall_contacts(va: np.ndarray, na: np.ndarray, shape_verts: np.ndarray, shape
 
 
 @kernel
+def _circle_beyond(wv: np.ndarray, wn: np.ndarray, s: int, e: int, x: float, y: float, reach: float) -> bool:
+    """Whether the point (x, y) lies more than `reach` beyond some face of the wall piece of rows
+    s..e: every point of a body about it of bounding radius r then lies more than `reach` - r
+    beyond that face. (No early return: the loop is the whole call, so numba takes no reference
+    counts on the arrays per call; see `jit`.)"""
+    farthest = -math.inf
+    for k in range(s, e):
+        d = (x - wv[k, 0]) * wn[k, 0] + (y - wv[k, 1]) * wn[k, 1]
+        if d > farthest:
+            farthest = d
+    return farthest > reach
+
+
+@kernel
 def bodies_wall_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray,
-                         body_first: np.ndarray, which: np.ndarray, states: np.ndarray, pressed: np.ndarray,
-                         near_first: np.ndarray, near: np.ndarray, walls: tuple, dt: float,
+                         body_first: np.ndarray, which: np.ndarray, radius: np.ndarray, states: np.ndarray,
+                         pressed: np.ndarray, near_first: np.ndarray, near: np.ndarray, walls: tuple, dt: float,
                          margin: float) -> np.ndarray:
     """`wall_contacts` for many bodies in one call: body q is shape `which[q]` of a
-    `geometry.ShapeTable` (lv, ln, first, reach, body_first) in state states[q] = (x, y, angle, vx,
-    vy, spin), `pressed[q]`, near the wall pieces near[near_first[q]:near_first[q + 1]]. Returns
-    the rows kept, body by body, each with its q in column BODY."""
+    `geometry.ShapeTable` (lv, ln, first, reach, body_first; bounding radius `radius[which[q]]`)
+    in state states[q] = (x, y, angle, vx, vy, spin), `pressed[q]`, near the wall pieces
+    near[near_first[q]:near_first[q + 1]]. Returns the rows kept, body by body, each with its q in
+    column BODY.
+
+    A wall piece its bounding circle stays more than `margin` clear of is passed over: the
+    separating axes would find that face first (`collide_convex` stops there with no row), so
+    the rows are the same, without posing a body that only came near a wall's box."""
     rows = 0
     for q in range(len(which)):
         pieces = body_first[which[q] + 1] - body_first[which[q]]
@@ -257,14 +280,24 @@ def bodies_wall_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reac
     # Each body is posed into its own rows of one table-sized array: nothing is allocated a body.
     verts, normals = np.empty((len(lv), 2)), np.empty((len(lv), 2))
     work, clip = toi_work(max(widest(first), widest(walls[2]))), np.empty((3, 3))
+    wv, wn, wf = walls[0], walls[1], walls[2]
+    close = np.empty(len(near), dtype=np.int64)
     for q in range(len(which)):
+        x, y, angle, vx, vy, spin = states[q]
+        beyond = radius[which[q]] + margin + _CIRCLE_SLACK
+        count = 0
+        for n in range(near_first[q], near_first[q + 1]):
+            g = near[n]
+            if not _circle_beyond(wv, wn, wf[g], wf[g + 1], x, y, beyond):
+                close[count] = g
+                count += 1
+        if count == 0:
+            continue
         p0, p1 = body_first[which[q]], body_first[which[q] + 1]
         v0, v1 = first[p0], first[p1]
-        x, y, angle, vx, vy, spin = states[q]
         pose_piece(lv, ln, v0, v1, x, y, angle, verts[v0:v1], normals[v0:v1])
         made = wall_contacts(verts, normals, lv, ln, first[p0:p1 + 1], reach[p0:p1], x, y, angle, vx, vy, spin, dt,
-                             pressed[q], walls, near[near_first[q]:near_first[q + 1]], margin, out[kept:], clip,
-                             work)
+                             pressed[q], walls, close[:count], margin, out[kept:], clip, work)
         for k in range(kept, kept + made):
             out[k, BODY] = q
         kept += made
@@ -426,7 +459,8 @@ def _warm() -> None:
                  0.01, False, np.empty((2, ROW)), np.empty((3, 3)))
     table = ShapeTable.of([ConvexSet.of([square], [normals])])
     bodies_wall_contacts(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
-                         table.body_first, np.zeros(1, dtype=np.int64), np.array([[0.0, 0.0, 0.0, 0.0, 1.0, 0.0]]),
+                         table.body_first, np.zeros(1, dtype=np.int64), np.full(1, 0.71),
+                         np.array([[0.0, 0.0, 0.0, 0.0, 1.0, 0.0]]),
                          np.zeros(1, dtype=np.bool_), np.array([0, 1], dtype=np.int64), np.zeros(1, dtype=np.int64),
                          walls, 1.0 / 240.0, 0.01)
     two = ShapeTable.of([ConvexSet.of([square], [normals])] * 2)

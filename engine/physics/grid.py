@@ -29,7 +29,7 @@ FAT_KEEP = 32  # walls kept a body; a body with more near it asks the grid every
 def overlaps(box: np.ndarray, boxes: np.ndarray, i: int) -> bool:
     """Whether `box` and row i of `boxes` overlap (a row by index: taking it as a view of its own
     costs more than the test)."""
-    return box[0] <= boxes[i, 2] and boxes[i, 0] <= box[2] and box[1] <= boxes[i, 3] and boxes[i, 1] <= box[3]
+    return (box[0] <= boxes[i, 2]) & (boxes[i, 0] <= box[2]) & (box[1] <= boxes[i, 3]) & (boxes[i, 1] <= box[3])
 
 
 @kernel
@@ -173,15 +173,14 @@ def walls_near(fat: np.ndarray, walls: np.ndarray, k: int, box: np.ndarray, boxe
     """The grid's boxes (`boxes`) that `box` of body row k overlaps, ascending, into `out`, picked
     from those kept for its fat box (`FatBoxes`); -1 if `box` is not inside it (`look_up_walls`
     then). Few arrays pass: a call passing many costs more than this work."""
-    if not (fat[k, 0] <= box[0] and fat[k, 1] <= box[1] and box[2] <= fat[k, 2] and box[3] <= fat[k, 3]):
-        return -1
+    inside = (fat[k, 0] <= box[0]) & (fat[k, 1] <= box[1]) & (box[2] <= fat[k, 2]) & (box[3] <= fat[k, 3])
     count = 0
-    for m in range(1, walls[k, 0] + 1):  # ascending, as kept
+    for m in range(1, walls[k, 0] + 1 if inside else 1):  # ascending, as kept
         i = walls[k, m]
         if overlaps(box, boxes, i):
             out[count] = i
             count += 1
-    return count
+    return count if inside else -1
 
 
 @kernel
@@ -347,6 +346,12 @@ def body_pairs(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, grow: fl
     `box_pairs`; else only a kinematic body with an awake dynamic one (bodies that meet walls and
     kinematic bodies only: K balls, no K² pairs). i < j, sorted."""
     n = len(rows)
+    if not meet:
+        kinematic = 0
+        for q in range(n):
+            kinematic += state[rows[q], INV_MASS] == 0.0
+        if kinematic == 0:  # a fan of shots on a hole without windmills: no pair to look for
+            return np.zeros((0, 2), dtype=np.int64)
     boxes = np.empty((n, 4))
     active = np.zeros(n, dtype=np.bool_)
     moving = np.zeros(n, dtype=np.bool_)

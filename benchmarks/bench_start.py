@@ -6,9 +6,9 @@ no display needed):
 - `polygolf simulate SCENE` of one frame, cold and warm: from starting the process to its first
   simulated frame (the process ends right after it).
 
-Each is a new Python process (imports included), the median over --repeats. With an editable install
-numba would otherwise cache next to the source (__pycache__); NUMBA_CACHE_DIR moves the cache to a
-temporary folder, so the cold runs are really cold and the developer's cache is left alone.
+Each is a new Python process (imports included), the median over --repeats. NUMBA_CACHE_DIR moves the
+cache (`jit`: the user cache folder otherwise) to a temporary folder, so the cold runs are really cold
+and the developer's cache is left alone.
 
     python benchmarks/bench_start.py [--repeats 3] [--scene content/scenes/flat-wall.yaml]
 """

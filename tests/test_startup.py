@@ -172,6 +172,32 @@ def test_first_launch_compiles_with_one_line_on_stderr_and_the_next_loads_silent
     assert again.returncode == 0 and again.stdout == "" and again.stderr == "", again.stderr
 
 
+def test_compiled_kernels_are_kept_per_version_of_the_engine_sources(tmp_path):
+    """A kernel holds the code of the kernels it calls, from other files too, which numba's own
+    check (each kernel against its own file) misses: the cache folder is named by a digest of every
+    engine source, so an edit anywhere compiles afresh, and a few older folders are kept."""
+    engine = tmp_path / "engine"
+    (engine / "physics").mkdir(parents=True)
+    (engine / "physics" / "grid.py").write_text("SIDE = 1\n")
+    (engine / "run.py").write_text("STAGES = 2\n")
+    first = jit.engine_fingerprint(engine)
+    assert jit.engine_fingerprint(engine) == first
+    (engine / "physics" / "grid.py").write_text("SIDE = 2\n")  # a callee, not the run's own file
+    assert jit.engine_fingerprint(engine) != first
+    base = tmp_path / "kernels"
+    for age, name in enumerate(["a", "b", "c", "d"]):
+        folder = jit.cache_folder(base, name)
+        os.utime(folder, (1000.0 + age, 1000.0 + age))
+    assert sorted(p.name for p in base.iterdir()) == ["b", "c", "d"]  # "a", used longest ago, went
+    jit.cache_folder(base, "b")  # in use again: kept
+    jit.cache_folder(base, "e")
+    assert sorted(p.name for p in base.iterdir()) == ["b", "d", "e"]
+    if jit.COMPILED:
+        import numba
+
+        assert Path(numba.config.CACHE_DIR).name == jit.engine_fingerprint()
+
+
 def test_prepare_physics_runs_every_warm_up(monkeypatch):
     ran = []
     steps = [(label, lambda label=label: ran.append(label)) for label in ("a", "b")]

@@ -5,9 +5,20 @@ A kernel is written once, in the subset of Python numba compiles (numbers, numpy
 runs compiled when numba is present. With `NUMBA_DISABLE_JIT=1`, or where numba is missing, the very
 same function runs interpreted, which is how a test reaches a kernel line by line.
 
-Settings: `cache=True` keeps the machine code on disk (next to the module, or numba's user cache
-when that is read-only), so only the first launch compiles; no `fastmath`, so every operation is the
-IEEE one the interpreted code would do and runs stay bit-for-bit repeatable.
+Settings: `cache=True` keeps the machine code on disk, so only the first launch compiles; no
+`fastmath`, so every operation is the IEEE one the interpreted code would do and runs stay bit-for-bit
+repeatable.
+
+Where: the platform's user cache folder (`NUMBA_CACHE_DIR` instead, if set), in a folder named by a
+digest of the engine's sources (`engine_fingerprint`). numba checks a cached kernel against its own
+file only, but a kernel holds the code of every kernel it calls, from other files too: after an edit,
+a checkout or an upgrade it would load a kernel built from the old callees. A new digest compiles
+afresh instead; the last few folders are kept, older ones removed.
+
+In a kernel called in a hot loop, arrays passed in should not die on different branches (no
+`and`/`or` chain or early return over them, no call that takes them on one branch only): numba then
+cannot cancel the reference counts it takes on them, and every call costs two atomic operations per
+array (a third of a fan of shots' time, before `grid.walls_near` was written so).
 
 Each kernel module registers a *warm-up*: a call with small, typical arguments that makes numba
 compile (or load from the cache) every kernel it defines with the argument types the engine uses.
@@ -16,10 +27,15 @@ compile (or load from the cache) every kernel it defines with the argument types
 
 from __future__ import annotations
 
+import hashlib
 import os
+import shutil
 import time
 from collections.abc import Callable
+from pathlib import Path
 from typing import TypeVar
+
+from platformdirs import user_cache_path
 
 F = TypeVar("F", bound=Callable)
 
@@ -34,6 +50,34 @@ except ImportError:  # the same code, interpreted
 HeldList = numba.typed.List if numba is not None else list
 
 COMPILED = numba is not None and os.environ.get("NUMBA_DISABLE_JIT", "0") in ("", "0")
+ENGINE_DIR = Path(__file__).resolve().parents[1]
+KEEP_CACHES = 3  # cache folders of different sources kept side by side (the current one among them)
+
+
+def engine_fingerprint(root: Path = ENGINE_DIR) -> str:
+    """A digest of every source file under `root` (the engine), names and contents."""
+    digest = hashlib.sha256()
+    for path in sorted(root.rglob("*.py")):
+        digest.update(path.relative_to(root).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
+    return digest.hexdigest()[:16]
+
+
+def cache_folder(base: Path, fingerprint: str) -> Path:
+    """The folder compiled kernels of these sources go to under `base`, made if need be; of the
+    others there, all but the most recently used KEEP_CACHES - 1 are removed."""
+    folder = base / fingerprint
+    if not folder.is_dir():
+        others = sorted((p for p in base.glob("*") if p.is_dir()), key=lambda p: p.stat().st_mtime, reverse=True)
+        for stale in others[KEEP_CACHES - 1:]:
+            shutil.rmtree(stale, ignore_errors=True)
+        folder.mkdir(parents=True, exist_ok=True)
+    folder.touch()  # used now
+    return folder
+
+
+if COMPILED:
+    _base = os.environ.get("NUMBA_CACHE_DIR") or user_cache_path("polygolf", appauthor=False) / "kernels"
+    numba.config.CACHE_DIR = str(cache_folder(Path(_base), engine_fingerprint()))
 
 WARM_UPS: list[tuple[str, Callable[[], None]]] = []
 

@@ -339,6 +339,18 @@ def bodies_pair_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body
                 pose_piece(lv, ln, v0, v1, poses[q, 0], poses[q, 1], poses[q, 2], posed_v[v0:v1], posed_n[v0:v1])
                 posed[q] = True
         a0, a1, b0, b1 = body_first[a], body_first[a + 1], body_first[b], body_first[b + 1]
+        # Most pairs a broadphase finds do not touch: the separating axes `collide_convex` tries
+        # first say so here, without the call (whose arrays numba counts references to).
+        apart = True
+        for i in range(a0, a1):
+            for j in range(b0, b1):
+                gap_a, _ = max_separation(posed_v, posed_n, first[i], first[i + 1], posed_v, first[j], first[j + 1],
+                                          NO_SEAMS, -1)
+                gap_b, _ = max_separation(posed_v, posed_n, first[j], first[j + 1], posed_v, first[i], first[i + 1],
+                                          NO_SEAMS, -1)
+                apart &= (gap_a > margin) | (gap_b > margin)
+        if apart:
+            continue
         made = collide_sets(posed_v, posed_n, first[a0:a1 + 1], posed_v, posed_n, first[b0:b1 + 1], every[:b1 - b0],
                             NO_SEAMS, NO_SEAMS, False, margin, False, out[rows:], clip)
         if made == 0:

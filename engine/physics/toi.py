@@ -198,8 +198,8 @@ def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reac
 def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
                     state: np.ndarray, rows: np.ndarray, radius: np.ndarray, least: float, grid: tuple,
                     fat_boxes: tuple, seen: np.ndarray, found: np.ndarray, wv: np.ndarray, wn: np.ndarray,
-                    wfirst: np.ndarray, target: float, tolerance: float, allowance: float, out: np.ndarray,
-                    work: tuple) -> tuple[float, int]:
+                    wfirst: np.ndarray, target: float, tolerance: float, allowance: float, far: float,
+                    out: np.ndarray, work: tuple) -> tuple[bool, int]:
     """For each body q of `rows` (a `body.BodyStore` state, from its pose at the substep's start to
     its pose now; shape q of a `ShapeTable`, bounding radius radius[q]), the earliest impact of any
     of its pieces with the wall pieces its swept box meets in `grid` (the walls' `BoxGrid.arrays`,
@@ -208,9 +208,15 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
     `least` (the discrete contact handles small steps), into `out` (the caller's, kept between
     substeps). Returns the longest step of an awake body, and how many bodies hit.
     `seen` and `found`: the grid query's scratch, one row per wall piece; `work`: the time of
-    impact's (`toi_work` for the widest piece of either set), kept by the caller."""
+    impact's (`toi_work` for the widest piece of either set), kept by the caller. Returns whether
+    an awake body stepped `far` or more, and how many bodies hit.
+
+    A body's step is its centre's path plus its turn at its bounding radius. The path's length is
+    taken as the square root of the sum of squares, within a hair of the exact `math.hypot` (which
+    costs several times more); within a millionth of `least` or `far`, where that hair could decide,
+    the exact one is taken."""
     out[:] = 1.0
-    longest = 0.0
+    moved = False
     hits = 0
     box = np.empty(4)
     fat, walls = fat_boxes
@@ -221,9 +227,11 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
         if state[k, ASLEEP] != 0.0:
             continue
         x0, y0, a0, x1, y1, a1 = state[k, X0], state[k, Y0], state[k, ANGLE0], state[k, X], state[k, Y], state[k, ANGLE]
-        travel = math.hypot(x1 - x0, y1 - y0) + abs(a1 - a0) * radius[q]
-        if travel > longest:
-            longest = travel
+        dx, dy, turn = x1 - x0, y1 - y0, abs(a1 - a0) * radius[q]
+        travel = math.sqrt(dx * dx + dy * dy) + turn
+        if not (abs(travel - least) > 1e-6 * least and abs(travel - far) > 1e-6 * far):
+            travel = math.hypot(dx, dy) + turn
+        moved |= travel >= far
         if state[k, INV_MASS] == 0.0 or travel < least:
             continue
         r = radius[q] + target
@@ -246,7 +254,7 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
         out[q] = best
         if best < 1.0:
             hits += 1
-    return longest, hits
+    return moved, hits
 
 
 @kernel
@@ -449,7 +457,7 @@ def _warm() -> None:
     first_wall_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                     table.body_first, state, np.array([0, 1], dtype=np.int64), np.full(2, 0.71), 0.005, grid.arrays,
                     FatBoxes().of(state, 1), np.zeros(1, dtype=np.bool_), np.empty(1, dtype=np.int64), wall.verts,
-                    wall.normals, wall.first, 0.005, 0.001, 0.005, np.empty(2), toi_work(4))
+                    wall.normals, wall.first, 0.005, 0.001, 0.005, 0.0025, np.empty(2), toi_work(4))
     first_pair_hit(*args, start, end, *args, still, still, 0.005, 0.001, 0.005, toi_work(4))
     body_pair_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                    table.body_first, np.array([[0, 1]], dtype=np.int64), state, np.array([0, 1], dtype=np.int64),

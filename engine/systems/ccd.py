@@ -62,11 +62,11 @@ def sweep(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inpu
     lv, ln, first, reach, body_first, rows, radius, _, _, _, _ = shapes
     (wv, wn, wfirst, _, _), _, _, _, _, grid = walls
     seen, found, hits, work, several, _ = inputs
-    longest, count = first_wall_hits(lv, ln, first, reach, body_first, state, rows, radius, LINEAR_SLOP, grid,
-                                      fat_boxes, seen, found, wv, wn, wfirst, TOI_TARGET, 0.25 * LINEAR_SLOP,
-                                      LINEAR_SLOP, hits, work)
     # No pair can need sweeping while no body steps half the linear slop.
-    if several and longest >= 0.5 * LINEAR_SLOP:
+    moved, count = first_wall_hits(lv, ln, first, reach, body_first, state, rows, radius, LINEAR_SLOP, grid,
+                                   fat_boxes, seen, found, wv, wn, wfirst, TOI_TARGET, 0.25 * LINEAR_SLOP,
+                                   LINEAR_SLOP, 0.5 * LINEAR_SLOP, hits, work)
+    if several and moved:
         count += _body_hits(state, shapes, walls, inputs)
     return rewind(state, rows, hits) if count else 0
 

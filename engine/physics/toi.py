@@ -143,6 +143,26 @@ def widest(first: np.ndarray) -> int:
 
 
 @kernel
+def wall_out_of_reach(reach: float, start: np.ndarray, end: np.ndarray, wv: np.ndarray, wn: np.ndarray, ws: int,
+                      we: int, target: float, tolerance: float, rates: np.ndarray) -> bool:
+    """`time_of_impact`'s quick answer: per unit of t, how fast the piece (bounding radius `reach`
+    about the body's origin, moving start -> end) can approach each face of the wall piece (rows
+    ws..we), into rates[0:]; and whether it stays beyond some face, farther than `target` and the
+    tolerance, however fast it approaches it: then there is no impact, as the first advancement
+    step would find (its step along that face's axis passes 1). (A loop and no call, so a caller
+    in a hot loop pays no reference counts for it; see `jit`.)"""
+    dx, dy = end[0] - start[0], end[1] - start[1]
+    turn = abs(end[2] - start[2]) * reach
+    clear = target + tolerance + _CLEARANCE
+    beyond = False
+    for k in range(we - ws):
+        rates[k] = max(0.0, -(dx * wn[ws + k, 0] + dy * wn[ws + k, 1])) + turn
+        beyond |= (start[0] - wv[ws + k, 0]) * wn[ws + k, 0] + (start[1] - wv[ws + k, 1]) * wn[ws + k, 1] - reach \
+            - rates[k] > clear
+    return beyond
+
+
+@kernel
 def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float, start: np.ndarray,
                    end: np.ndarray, wv: np.ndarray, wn: np.ndarray, ws: int, we: int, target: float, tolerance: float,
                    allowance: float, work: tuple) -> float:
@@ -158,18 +178,10 @@ def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float,
     general_rate = math.hypot(dx, dy) + turn
     if general_rate <= 0.0:
         return NO_HIT
-    # Per unit of t, wall face k can approach no faster than this; the piece's own faces turn with
-    # it, so only the general bound holds for them.
-    # A wall face beyond which the piece's bounding circle (radius `reach` about the body's origin)
-    # stays, farther than `target` and the tolerance, however fast it approaches that face: no
-    # impact, as the first advancement step would find (its step along that face's axis passes 1).
     rates = work[2]
-    clear = target + tolerance + _CLEARANCE
-    for k in range(we - ws):
-        rates[k] = max(0.0, -(dx * wn[ws + k, 0] + dy * wn[ws + k, 1])) + turn
-        if (start[0] - wv[ws + k, 0]) * wn[ws + k, 0] + (start[1] - wv[ws + k, 1]) * wn[ws + k, 1] - reach \
-                - rates[k] > clear:
-            return NO_HIT
+    if wall_out_of_reach(reach, start, end, wv, wn, ws, we, target, tolerance, rates):
+        return NO_HIT
+    # The piece's own faces turn with it, so only the general bound holds for them.
     for k in range(we - ws, we - ws + e - s):
         rates[k] = general_rate
     return _advance(lv, ln, s, e, start, end, wv, wn, ws, we, _NOWHERE, _NOWHERE, True, rates, target, tolerance,
@@ -247,6 +259,9 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
         for n in range(count):
             w = found[n]
             for i in range(body_first[q], body_first[q + 1]):
+                if wall_out_of_reach(reach[i], start, end, wv, wn, wfirst[w], wfirst[w + 1], target, tolerance,
+                                     work[2]):
+                    continue  # the quick answer first, without the call
                 t = time_of_impact(lv, ln, first[i], first[i + 1], reach[i], start, end, wv, wn, wfirst[w],
                                    wfirst[w + 1], target, tolerance, allowance, work)
                 if t < best:

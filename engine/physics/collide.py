@@ -62,6 +62,22 @@ def max_separation(v1: np.ndarray, n1: np.ndarray, s1: int, e1: int, v2: np.ndar
 
 
 @kernel
+def pieces_apart(va: np.ndarray, na: np.ndarray, fa: np.ndarray, a0: int, a1: int, vb: np.ndarray, nb: np.ndarray,
+                 fb: np.ndarray, b0: int, b1: int, margin: float) -> bool:
+    """Whether every piece a0..a1 of set A (rows fa[i]..fa[i + 1] of va, na) lies more than `margin`
+    from every piece b0..b1 of set B along a face of one of the two: the separating axes
+    `collide_convex` tries first, so it would make no row for any of those pairs. (Loops and leaf
+    calls only, for callers in hot loops; see `jit`.)"""
+    apart = True
+    for i in range(a0, a1):
+        for j in range(b0, b1):
+            gap_a, _ = max_separation(va, na, fa[i], fa[i + 1], vb, fb[j], fb[j + 1], NO_SEAMS, -1)
+            gap_b, _ = max_separation(vb, nb, fb[j], fb[j + 1], va, fa[i], fa[i + 1], NO_SEAMS, -1)
+            apart &= (gap_a > margin) | (gap_b > margin)
+    return apart
+
+
+@kernel
 def _incident_edge(normals: np.ndarray, s: int, e: int, nx: float, ny: float, skip: np.ndarray,
                    skip_start: int) -> int:
     """The face most opposed to the reference normal (a wall's internal edges face nothing)."""
@@ -268,9 +284,9 @@ def bodies_wall_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reac
     near[near_first[q]:near_first[q + 1]]. Returns the rows kept, body by body, each with its q in
     column BODY.
 
-    A wall piece its bounding circle stays more than `margin` clear of is passed over: the
-    separating axes would find that face first (`collide_convex` stops there with no row), so
-    the rows are the same, without posing a body that only came near a wall's box."""
+    A wall piece its bounding circle stays more than `margin` clear of is passed over without
+    posing the body, and then one its pieces are `pieces_apart` from: `collide_convex` would stop
+    at those separating axes with no row, so the rows are the same."""
     rows = 0
     for q in range(len(which)):
         pieces = body_first[which[q] + 1] - body_first[which[q]]
@@ -296,8 +312,16 @@ def bodies_wall_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reac
         p0, p1 = body_first[which[q]], body_first[which[q] + 1]
         v0, v1 = first[p0], first[p1]
         pose_piece(lv, ln, v0, v1, x, y, angle, verts[v0:v1], normals[v0:v1])
+        touching = 0
+        for c in range(count):
+            g = close[c]
+            if not pieces_apart(verts, normals, first, p0, p1, wv, wn, wf, g, g + 1, margin):
+                close[touching] = g
+                touching += 1
+        if touching == 0:
+            continue
         made = wall_contacts(verts, normals, lv, ln, first[p0:p1 + 1], reach[p0:p1], x, y, angle, vx, vy, spin, dt,
-                             pressed[q], walls, close[:count], margin, out[kept:], clip, work)
+                             pressed[q], walls, close[:touching], margin, out[kept:], clip, work)
         for k in range(kept, kept + made):
             out[k, BODY] = q
         kept += made
@@ -339,17 +363,9 @@ def bodies_pair_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body
                 pose_piece(lv, ln, v0, v1, poses[q, 0], poses[q, 1], poses[q, 2], posed_v[v0:v1], posed_n[v0:v1])
                 posed[q] = True
         a0, a1, b0, b1 = body_first[a], body_first[a + 1], body_first[b], body_first[b + 1]
-        # Most pairs a broadphase finds do not touch: the separating axes `collide_convex` tries
-        # first say so here, without the call (whose arrays numba counts references to).
-        apart = True
-        for i in range(a0, a1):
-            for j in range(b0, b1):
-                gap_a, _ = max_separation(posed_v, posed_n, first[i], first[i + 1], posed_v, first[j], first[j + 1],
-                                          NO_SEAMS, -1)
-                gap_b, _ = max_separation(posed_v, posed_n, first[j], first[j + 1], posed_v, first[i], first[i + 1],
-                                          NO_SEAMS, -1)
-                apart &= (gap_a > margin) | (gap_b > margin)
-        if apart:
+        # Most pairs a broadphase finds do not touch: say so without the call (whose arrays numba
+        # counts references to).
+        if pieces_apart(posed_v, posed_n, first, a0, a1, posed_v, posed_n, first, b0, b1, margin):
             continue
         made = collide_sets(posed_v, posed_n, first[a0:a1 + 1], posed_v, posed_n, first[b0:b1 + 1], every[:b1 - b0],
                             NO_SEAMS, NO_SEAMS, False, margin, False, out[rows:], clip)

@@ -79,6 +79,8 @@ class LoadingView(arcade.View):
 
     def _warm_up(self) -> None:
         """Every step in order, on the warm-up thread."""
+        from polygolf.engine.physics.jit import settle
+
         total = len(self.steps)
         try:
             with watching_compiles(self.console):
@@ -86,6 +88,7 @@ class LoadingView(arcade.View):
                     self.console(self.done, total, label)
                     warm()
                     self.done += 1
+            settle()
             self.console(total, total, "ready")
         except BaseException as error:  # noqa: BLE001 - handed to the window's thread, raised there
             self.error = error

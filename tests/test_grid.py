@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 from polygolf.engine.loading.scene import Scene, build_scene
 from polygolf.engine.physics.body import ASLEEP, COLUMNS, INV_MASS, X, Y
-from polygolf.engine.physics.grid import BoxGrid, FatBoxes, bodies_near, box_pairs
+from polygolf.engine.physics.grid import BoxGrid, FatBoxes, bodies_near, box_pairs, by_entity
 
 coord = st.floats(-3000, 3000, allow_nan=False)
 size = st.floats(0.01, 2000, allow_nan=False)
@@ -70,6 +70,17 @@ def test_walls_kept_in_fat_boxes_are_the_grids_answer_as_bodies_move(items, step
         state[:, X] += [dx, -dy, 0.5 * dx]
         state[:, Y] += [dy, dx, -0.5 * dy]
         _check_bodies_near(items, grid, fat_boxes, state, radius, 0.01)
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.tuples(st.integers(0, 39), st.integers(0, 39)), max_size=80), st.permutations(range(40)))
+def test_pairs_by_entity_come_sorted_whatever_order_the_bodies_are_listed_in(pairs, order):
+    """Entities listed ascending (esper's usual order) are in order already; any other order is
+    sorted: the same pairs of entities, (smaller, larger), ascending."""
+    pairs = sorted({(min(i, j), max(i, j)) for i, j in pairs if i != j})
+    for ents in (np.arange(100, 140), 100 + np.array(order)):
+        got = by_entity(np.array(pairs, dtype=np.int64).reshape(-1, 2), ents.astype(np.int64)).tolist()
+        assert got == sorted(sorted((int(ents[i]), int(ents[j]))) for i, j in pairs)
 
 
 def _check_box_pairs(items: list, active: list[bool]) -> None:

@@ -262,10 +262,18 @@ def _add_pair(pairs: np.ndarray, count: int, i: int, j: int) -> np.ndarray:
 
 @kernel
 def _sorted_pairs(pairs: np.ndarray, count: int, n: int) -> np.ndarray:
-    """The first `count` pairs of indices below n, sorted."""
-    out = pairs[:count].copy()
-    keys = out[:, 0] * (n + 1) + out[:, 1]
-    return out[np.argsort(keys, kind="mergesort")]
+    """The first `count` pairs of indices below n, sorted (by their keys i·(n + 1) + j, one per pair:
+    a sort of numbers, no permutation to apply)."""
+    return _decoded(np.sort(pairs[:count, 0] * (n + 1) + pairs[:count, 1]), n + 1)
+
+
+@kernel
+def _decoded(keys: np.ndarray, base: int) -> np.ndarray:
+    """The pairs (key // base, key % base) of `keys`, in their order."""
+    out = np.empty((len(keys), 2), dtype=np.int64)
+    for g in range(len(keys)):
+        out[g, 0], out[g, 1] = keys[g] // base, keys[g] % base
+    return out
 
 
 @kernel
@@ -392,7 +400,12 @@ def by_entity(pairs: np.ndarray, ents: np.ndarray) -> np.ndarray:
         out[g, 0], out[g, 1] = min(a, b), max(a, b)
         top = max(top, out[g, 1])
     keys = out[:, 0] * (top + 1) + out[:, 1]
-    return out[np.argsort(keys, kind="mergesort")]
+    ordered = True
+    for g in range(len(keys) - 1):
+        ordered &= keys[g] < keys[g + 1]
+    if ordered:  # the entities ascend with the indices (as esper lists them): sorted already
+        return out
+    return _decoded(np.sort(keys), top + 1)
 
 
 class BoxGrid:

@@ -196,6 +196,13 @@ def test_compiled_kernels_are_kept_per_version_of_the_engine_sources(tmp_path):
         import numba
 
         assert Path(numba.config.CACHE_DIR).name == jit.engine_fingerprint()
+    # No folder can be made there: the engine still imports (numba then caches where it can).
+    blocked = tmp_path / "file"
+    blocked.write_text("not a folder")
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(blocked / "kernels"))
+    result = subprocess.run([sys.executable, "-c", "import polygolf.engine.physics.jit"], capture_output=True,
+                            text=True, env=env, timeout=60)
+    assert result.returncode == 0, result.stderr
 
 
 def test_once_ready_the_collector_has_the_compiled_engine_out_of_sight():

@@ -492,8 +492,7 @@ def find_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.n
             for c in range(6):
                 moving[q, c] = state[near_rows[q], B_X + c]
         wall_rows = bodies_wall_contacts(lv, ln, first, reach, body_first, near, radius, moving, held, near_first,
-                                         near_found,
-                                         walls, dt, margin)
+                                         near_found, walls, dt, margin)
     kept_rows, kept_first = np.zeros((0, ROW)), np.zeros(1, dtype=np.int64)
     kept_ents, kept_bodies, kept_materials = np.zeros((0, 2), dtype=np.int64), np.zeros((0, 2), dtype=np.int64), \
         np.zeros((0, 4))

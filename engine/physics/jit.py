@@ -78,7 +78,10 @@ def cache_folder(base: Path, fingerprint: str) -> Path:
 
 if COMPILED:
     _base = os.environ.get("NUMBA_CACHE_DIR") or user_cache_path("polygolf", appauthor=False) / "kernels"
-    numba.config.CACHE_DIR = str(cache_folder(Path(_base), engine_fingerprint()))
+    try:
+        numba.config.CACHE_DIR = str(cache_folder(Path(_base), engine_fingerprint()))
+    except OSError:  # no writable cache folder: numba's own places (beside the code, or its user cache)
+        pass
 
 WARM_UPS: list[tuple[str, Callable[[], None]]] = []
 

@@ -117,6 +117,42 @@ def test_explain_says_why(capsys):
     assert "friction on" in out
 
 
+def _first_best_pair(spec, key: str) -> str | None:
+    """The reason's definition, pair by pair: each body against the walls, the kinematic bodies,
+    then the other bodies (where bodies meet); the first largest product above zero."""
+    best, text = 0.0, None
+    others = [(getattr(w.material, key), "wall") for w in spec.walls]
+    others += [(getattr(k.material, key), k.name) for k in spec.kinematic]
+    for i, body in enumerate(spec.bodies):
+        own = getattr(body.material, key)
+        bodies = [(getattr(o.material, key), o.name) for j, o in enumerate(spec.bodies) if j != i] \
+            if spec.collide_bodies else []
+        for value, name in others + bodies:
+            if own * value > best:
+                best, text = own * value, f"{body.name} {key} {own:g} x {name} {value:g}"
+    return text
+
+
+def test_the_coefficient_reason_names_the_first_largest_pair():
+    """`explain`'s restitution and friction reasons, found in one pass, name the same pair as the
+    pair-by-pair definition, ties and zeros included, with and without bodies meeting."""
+    import random
+    from types import SimpleNamespace as Part
+
+    from polygolf.engine.assembly.effects import _best_product
+
+    rng = random.Random(5)
+    values = [0.0, 0.0, 0.3, 0.5, 0.5, 0.7, 1.0]
+    for _ in range(400):
+        def part(name: str) -> Part:
+            return Part(name=name, material=Part(restitution=rng.choice(values), friction=rng.choice(values)))
+        spec = Part(walls=[part("w") for _ in range(rng.randint(0, 3))],
+                    kinematic=[part(f"arm{k}") for k in range(rng.randint(0, 2))],
+                    bodies=[part(f"b{k}") for k in range(rng.randint(0, 6))], collide_bodies=rng.random() < 0.5)
+        for key in ("restitution", "friction"):
+            assert _best_product(spec, key) == _first_best_pair(spec, key)
+
+
 def test_installed_command_runs():
     out = subprocess.run([sys.executable, "-m", "polygolf.game.cli", "simulate", str(SCENES / "long-roll.yaml"),
                           "--seconds", "1", "--json"], capture_output=True, text=True, check=True).stdout

@@ -49,18 +49,40 @@ def derive_effects(spec: WorldSpec, substeps: int) -> dict[str, str]:
 
 def _best_product(spec: WorldSpec, key: str) -> str | None:
     """The largest body x wall (or body x body, where bodies meet) coefficient, described, or None if
-    every one is zero."""
-    best, text = 0.0, None
+    every one is zero: the first such pair, taking each body in turn against the walls, the kinematic
+    bodies, then the other bodies. (Coefficients are not negative, so a body's best partner is the
+    largest other value: found in one pass, not a pass a body, which took a thousand-body scene 0.18 s.)"""
     others = [(getattr(w.material, key), "wall") for w in spec.walls]
     others += [(getattr(k.material, key), k.name) for k in spec.kinematic]
-    for body in spec.bodies:
-        own = getattr(body.material, key)
-        bodies = [(getattr(o.material, key), o.name) for o in spec.bodies if o is not body] if spec.collide_bodies \
-            else []  # bodies that never meet have no product
+    own = [getattr(b.material, key) for b in spec.bodies]
+    top_other = max((value for value, _ in others), default=0.0)
+    first = second = -1  # the bodies of the largest and second largest own values
+    for k, value in enumerate(own):
+        if first < 0 or value > own[first]:
+            first, second = k, first
+        elif second < 0 or value > own[second]:
+            second = k
+
+    def best_partner(k: int) -> float:
+        """The largest value body k meets."""
+        partner = top_other
+        if spec.collide_bodies:
+            other = second if k == first else first
+            if other >= 0:
+                partner = max(partner, own[other])
+        return partner
+
+    best = max((own[k] * best_partner(k) for k in range(len(own))), default=0.0)
+    if not best > 0.0:
+        return None
+    for k, body in enumerate(spec.bodies):
+        if own[k] * best_partner(k) != best:
+            continue
+        bodies = [(own[j], o.name) for j, o in enumerate(spec.bodies) if j != k] if spec.collide_bodies else []
         for value, name in others + bodies:
-            if own * value > best:
-                best, text = own * value, f"{body.name} {key} {own:g} x {name} {value:g}"
-    return text
+            if own[k] * value == best:
+                return f"{body.name} {key} {own[k]:g} x {name} {value:g}"
+    return None  # not reached: the best product is some pair's
 
 
 def effects_for(spec: WorldSpec, substeps: int) -> dict[str, str]:

@@ -218,7 +218,7 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
     asked through the bodies' `grid.FatBoxes.arrays`),
     as a fraction of its motion; 1.0 if none, or if it is at rest, kinematic, or stepped less than
     `least` (the discrete contact handles small steps), into `out` (the caller's, kept between
-    substeps). Returns the longest step of an awake body, and how many bodies hit.
+    substeps).
     `seen` and `found`: the grid query's scratch, one row per wall piece; `work`: the time of
     impact's (`toi_work` for the widest piece of either set), kept by the caller. Returns whether
     an awake body stepped `far` or more, and how many bodies hit.

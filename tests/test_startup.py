@@ -4,9 +4,11 @@ over a chosen part of the physics tests, so both paths stay covered."""
 
 from __future__ import annotations
 
+import inspect
 import io
 import json
 import os
+import re
 import subprocess
 import sys
 import time
@@ -177,13 +179,23 @@ def test_compiled_kernels_are_kept_per_version_of_the_engine_sources(tmp_path):
     check (each kernel against its own file) misses: the cache folder is named by a digest of every
     engine source, so an edit anywhere compiles afresh, and a few older folders are kept."""
     engine = tmp_path / "engine"
-    (engine / "physics").mkdir(parents=True)
+    for folder in ("physics", "systems", "golf"):
+        (engine / folder).mkdir(parents=True)
     (engine / "physics" / "grid.py").write_text("SIDE = 1\n")
-    (engine / "run.py").write_text("STAGES = 2\n")
+    (engine / "systems" / "run.py").write_text("STAGES = 2\n")
+    (engine / "golf" / "rules.py").write_text("PAR = 3\n")
     first = jit.engine_fingerprint(engine)
+    assert jit.engine_fingerprint(engine) == first
+    (engine / "golf" / "rules.py").write_text("PAR = 4\n")  # no kernel comes from the golf rules
     assert jit.engine_fingerprint(engine) == first
     (engine / "physics" / "grid.py").write_text("SIDE = 2\n")  # a callee, not the run's own file
     assert jit.engine_fingerprint(engine) != first
+    # ... which holds while every kernel module is in those folders and imports from no other.
+    assert all(name.split(".")[2] in jit.KERNEL_SOURCES for name in jit.KERNEL_MODULES)
+    for folder in jit.KERNEL_SOURCES:
+        for source in (jit.ENGINE_DIR / folder).rglob("*.py"):
+            used = set(re.findall(r"polygolf\.engine\.(\w+)", source.read_text()))
+            assert used <= set(jit.KERNEL_SOURCES), (source, used)
     base = tmp_path / "kernels"
     for age, name in enumerate(["a", "b", "c", "d"]):
         folder = jit.cache_folder(base, name)
@@ -214,6 +226,21 @@ def test_once_ready_the_collector_has_the_compiled_engine_out_of_sight():
     frozen = gc.get_freeze_count()
     assert frozen > 50_000  # numba's compiler and caches, at least
     assert len(gc.get_objects()) < frozen / 10
+
+
+def test_leaf_kernels_hand_back_only_numbers():
+    """A leaf runs without numba's reference counts (`jit.leaf_kernel`): an array it handed back
+    would be released once too often by its caller. numba refuses a leaf that makes an array, not
+    one that returns an array it was given; each leaf's annotation says what it returns."""
+    jit._load_kernel_modules()
+    if not jit.COMPILED:
+        pytest.skip("numba is disabled: no leaf is compiled")
+    assert len(jit.LEAVES) > 50
+    for leaf in jit.LEAVES:
+        returns = inspect.signature(leaf.py_func).return_annotation
+        assert returns is not inspect.Signature.empty, leaf.py_func.__name__
+        words = set(re.findall(r"[A-Za-z_.]+", str(returns))) - {"tuple"}
+        assert words <= {"None", "bool", "float", "int"}, (leaf.py_func.__name__, returns)
 
 
 def test_prepare_physics_runs_every_warm_up(monkeypatch):

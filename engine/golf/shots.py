@@ -101,12 +101,14 @@ def simulate_shots(hole: Hole, shots: Sequence[Shot], preset: Knobs | str = "bal
                         k = index.get(ent)
                         if k is not None and contact[k] is None and done[k] is None:
                             contact[k], contact_at[k] = frames - 1, (impact.x, impact.y)
-            state = sim.res.bodies.gather(esper.get_component(Body))[balls.of(sim.res.bodies, rows)]
+            store, picked = sim.res.bodies.gather(esper.get_component(Body)), balls.of(sim.res.bodies, rows)
             if path:
-                for k, x, y in zip(np.flatnonzero(running).tolist(), *state[running][:, [X, Y]].T.tolist()):
+                moving = picked[running]
+                for k, x, y in zip(np.flatnonzero(running).tolist(), store[moving, X].tolist(),
+                                   store[moving, Y].tolist()):
                     paths[k].append((x, y))
             # A holed ball rests in the cup, so resting covers it.
-            ended = running & (state[:, ASLEEP] != 0.0)
+            ended = running & (store[picked, ASLEEP] != 0.0)
             if until_contact:
                 ended |= running & np.array([c is not None for c in contact], dtype=np.bool_)
             for k in np.flatnonzero(ended).tolist():

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
-from polygolf.engine.physics.jit import kernel, warm_up
+from polygolf.engine.physics.jit import kernel, leaf_kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
 from polygolf.engine.physics.settings import GAP_TOLERANCE
 from polygolf.engine.physics.toi import reaches_wall, toi_work, widest
@@ -40,7 +40,7 @@ ROW = 14
 NO_SEAMS = np.zeros(0, dtype=np.bool_)
 
 
-@kernel
+@leaf_kernel
 def max_separation(v1: np.ndarray, n1: np.ndarray, s1: int, e1: int, v2: np.ndarray, s2: int, e2: int,
                    skip: np.ndarray, skip_start: int) -> tuple[float, int]:
     """Largest separation of polygon 2 (rows s2..e2) from the faces of polygon 1 (rows s1..e1), but
@@ -61,7 +61,7 @@ def max_separation(v1: np.ndarray, n1: np.ndarray, s1: int, e1: int, v2: np.ndar
     return best, best_edge
 
 
-@kernel
+@leaf_kernel
 def pieces_apart(va: np.ndarray, na: np.ndarray, fa: np.ndarray, a0: int, a1: int, vb: np.ndarray, nb: np.ndarray,
                  fb: np.ndarray, b0: int, b1: int, margin: float) -> bool:
     """Whether every piece a0..a1 of set A (rows fa[i]..fa[i + 1] of va, na) lies more than `margin`
@@ -77,7 +77,7 @@ def pieces_apart(va: np.ndarray, na: np.ndarray, fa: np.ndarray, a0: int, a1: in
     return apart
 
 
-@kernel
+@leaf_kernel
 def _incident_edge(normals: np.ndarray, s: int, e: int, nx: float, ny: float, skip: np.ndarray,
                    skip_start: int) -> int:
     """The face most opposed to the reference normal (a wall's internal edges face nothing)."""
@@ -89,7 +89,7 @@ def _incident_edge(normals: np.ndarray, s: int, e: int, nx: float, ny: float, sk
     return best
 
 
-@kernel
+@leaf_kernel
 def _clip(points: np.ndarray, count: int, nx: float, ny: float, offset: float, plane_id: float) -> int:
     """Keep the part of a segment (rows 0, 1 of x, y, feature) where n·p <= offset
     (Sutherland-Hodgman on one plane); returns how many points are left."""
@@ -113,7 +113,7 @@ def _clip(points: np.ndarray, count: int, nx: float, ny: float, offset: float, p
     return out
 
 
-@kernel
+@leaf_kernel
 def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndarray, nb: np.ndarray, sb: int,
                    eb: int, internal: np.ndarray, hidden: np.ndarray, seams: bool, margin: float,
                    out: np.ndarray, row: int, clip: np.ndarray) -> int:
@@ -205,7 +205,7 @@ def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndar
     return made
 
 
-@kernel
+@leaf_kernel
 def collide_sets(va: np.ndarray, na: np.ndarray, fa: np.ndarray, vb: np.ndarray, nb: np.ndarray, fb: np.ndarray,
                  pieces_b: np.ndarray, internal: np.ndarray, hidden: np.ndarray, seams: bool, margin: float,
                  b_outer: bool, out: np.ndarray, clip: np.ndarray) -> int:
@@ -227,7 +227,7 @@ def collide_sets(va: np.ndarray, na: np.ndarray, fa: np.ndarray, vb: np.ndarray,
     return rows
 
 
-@kernel
+@leaf_kernel
 def wall_contacts(va: np.ndarray, na: np.ndarray, shape_verts: np.ndarray, shape_normals: np.ndarray,
                   fa: np.ndarray, reach: np.ndarray, x: float, y: float, angle: float, vx: float, vy: float,
                   spin: float, dt: float, pressed: bool, walls: tuple, pieces: np.ndarray,
@@ -253,13 +253,14 @@ def wall_contacts(va: np.ndarray, na: np.ndarray, shape_verts: np.ndarray, shape
         if pressed or lowest <= GAP_TOLERANCE or reaches_wall(shape_verts, shape_normals, fa, reach, x, y, angle,
                                                               vx, vy, spin, dt, wv, wn, wf[g], wf[g + 1], work):
             for r in range(k, end):
-                out[kept] = out[r]
+                for c in range(ROW):  # (row by row: a leaf copies no array)
+                    out[kept, c] = out[r, c]
                 kept += 1
         k = end
     return kept
 
 
-@kernel
+@leaf_kernel
 def _circle_beyond(wv: np.ndarray, wn: np.ndarray, s: int, e: int, x: float, y: float, reach: float) -> bool:
     """Whether the point (x, y) lies more than `reach` beyond some face of the wall piece of rows
     s..e: every point of a body about it of bounding radius r then lies more than `reach` - r

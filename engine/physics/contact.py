@@ -45,7 +45,7 @@ from polygolf.engine.physics.collide import (
     kept_pairs,
 )
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable
-from polygolf.engine.physics.jit import kernel, warm_up
+from polygolf.engine.physics.jit import kernel, leaf_kernel, warm_up
 from polygolf.engine.physics.motion import wake_pairs
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 from polygolf.engine.physics.toi import pairs_apart
@@ -204,7 +204,7 @@ def table_of(manifolds: Sequence[Manifold], store: BodyStore, static: Body) -> C
 
 # --- the kernels ------------------------------------------------------------------------------------
 
-@kernel
+@leaf_kernel
 def _reduce(rows: np.ndarray, member: np.ndarray, count: int, nx: float, ny: float, chosen: np.ndarray) -> int:
     """Keep the two points (rows `member[:count]`) that span the contact along the tangent, into
     `chosen`; returns how many. The least (tangent position, separation) and the greatest (tangent
@@ -238,14 +238,14 @@ def _reduce(rows: np.ndarray, member: np.ndarray, count: int, nx: float, ny: flo
     return 2
 
 
-@kernel
+@leaf_kernel
 def _pose(state: np.ndarray, static: np.ndarray, row: int) -> tuple[float, float, float]:
     if row == state.shape[0]:
         return static[B_X], static[B_Y], static[B_ANGLE]
     return state[row, B_X], state[row, B_Y], state[row, B_ANGLE]
 
 
-@kernel
+@leaf_kernel
 def _to_local(x: float, y: float, angle: float, px: float, py: float) -> tuple[float, float]:
     """World point (px, py) in the frame of a body at (x, y, angle)."""
     c, s = math.cos(angle), math.sin(angle)
@@ -253,7 +253,7 @@ def _to_local(x: float, y: float, angle: float, px: float, py: float) -> tuple[f
     return c * dx + s * dy, -s * dx + c * dy
 
 
-@kernel
+@leaf_kernel
 def _local_geometry(rows: np.ndarray, r: int, state: np.ndarray, static: np.ndarray, row_a: int, row_b: int,
                     points: np.ndarray, p: int) -> None:
     """What NGS re-measures a point by: the reference face (normal, a point on it) in its body's
@@ -269,7 +269,7 @@ def _local_geometry(rows: np.ndarray, r: int, state: np.ndarray, static: np.ndar
     points[p, P_LQX], points[p, P_LQY] = _to_local(x, y, angle, rows[r, CLIP_X], rows[r, CLIP_Y])
 
 
-@kernel
+@leaf_kernel
 def _add_group(rows: np.ndarray, s: int, e: int, ea: int, eb: int, row_a: int, row_b: int, restitution: float,
                friction: float, other: np.ndarray, wall_materials: np.ndarray, wall_owner: np.ndarray,
                wall_index: np.ndarray, state: np.ndarray, static: np.ndarray, ngs: bool, ents: np.ndarray,
@@ -381,7 +381,7 @@ def build_contacts(wall_rows: np.ndarray, near_ents: np.ndarray, near_rows: np.n
     return ents[:m], pair[:m], normals[:m], first[:m + 1], points[:p], keys[:p], deepest
 
 
-@kernel
+@leaf_kernel
 def _compare(ids: np.ndarray, i: int, ent: int, keys: np.ndarray, p: int) -> int:
     """-1, 0 or 1 as carried id i is before, equal to or after (ent, keys[p]), in lexicographic order."""
     if ids[i, 0] != ent:

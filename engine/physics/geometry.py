@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from polygolf.engine.physics.body import ASLEEP, COLUMNS, X, Y
-from polygolf.engine.physics.jit import kernel, warm_up
+from polygolf.engine.physics.jit import leaf_kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
 
 
@@ -64,7 +64,7 @@ class ShapeTable:
         return cls(joined, np.array(body_first, dtype=np.int64))
 
 
-@kernel
+@leaf_kernel
 def pose_piece(verts: np.ndarray, normals: np.ndarray, start: int, end: int, x: float, y: float, angle: float,
                out_verts: np.ndarray, out_normals: np.ndarray) -> None:
     """Rows start..end of a body-frame set, turned by `angle` and moved to (x, y), into rows 0.. of
@@ -96,7 +96,7 @@ class Areas:
         return cls(verts, first, np.array(boxes, dtype=np.float64).reshape(-1, 4))
 
 
-@kernel
+@leaf_kernel
 def inside(verts: np.ndarray, start: int, end: int, x: float, y: float) -> bool:
     """Whether (x, y) is inside the simple polygon of rows start..end (even-odd ray crossing, as
     `polygon.contains`)."""
@@ -111,7 +111,7 @@ def inside(verts: np.ndarray, start: int, end: int, x: float, y: float) -> bool:
     return result
 
 
-@kernel
+@leaf_kernel
 def first_area(state: np.ndarray, rows: np.ndarray, verts: np.ndarray, first: np.ndarray, boxes: np.ndarray,
                out: np.ndarray) -> int:
     """For each awake body of `rows` (a `body.BodyStore` state), the first area that holds its

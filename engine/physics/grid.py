@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from polygolf.engine.physics.body import ASLEEP, COLUMNS, INV_MASS, SPIN, VX, VY, X0, Y0, X, Y
-from polygolf.engine.physics.jit import kernel, warm_up
+from polygolf.engine.physics.jit import kernel, leaf_kernel, warm_up
 
 MAX_CELLS = 256  # cells one box may be filed under
 MAX_GRID = 1 << 20  # cells in a grid; a coarser cell is taken beyond it
@@ -25,20 +25,20 @@ FAT_MARGIN = 0.25  # m: a body's walls are looked up for its box grown by this, 
 FAT_KEEP = 32  # walls kept a body; a body with more near it asks the grid every time
 
 
-@kernel
+@leaf_kernel
 def overlaps(box: np.ndarray, boxes: np.ndarray, i: int) -> bool:
     """Whether `box` and row i of `boxes` overlap (a row by index: taking it as a view of its own
     costs more than the test)."""
     return (box[0] <= boxes[i, 2]) & (boxes[i, 0] <= box[2]) & (box[1] <= boxes[i, 3]) & (boxes[i, 1] <= box[3])
 
 
-@kernel
+@leaf_kernel
 def rows_overlap(boxes: np.ndarray, i: int, j: int) -> bool:
     return boxes[i, 0] <= boxes[j, 2] and boxes[j, 0] <= boxes[i, 2] and boxes[i, 1] <= boxes[j, 3] \
         and boxes[j, 1] <= boxes[i, 3]
 
 
-@kernel
+@leaf_kernel
 def _cell(value: float, origin: float, inv: float, count: int) -> int:
     """The cell index of a coordinate, clamped to the grid (every filed box lies inside it; a
     coordinate beyond it, infinite or not a number is clamped too)."""
@@ -50,7 +50,7 @@ def _cell(value: float, origin: float, inv: float, count: int) -> int:
     return int(f)
 
 
-@kernel
+@leaf_kernel
 def _cell_range(box: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int) -> tuple[int, int, int, int]:
     """The cells a box touches."""
     return (_cell(box[0], x0, inv, nx), _cell(box[1], y0, inv, ny),
@@ -168,7 +168,7 @@ def _no_fat_boxes(bodies: int, keep: int) -> tuple[np.ndarray, np.ndarray]:
     return fat, np.zeros((bodies, 1 + keep), dtype=np.int64)
 
 
-@kernel
+@leaf_kernel
 def walls_near(fat: np.ndarray, walls: np.ndarray, k: int, box: np.ndarray, boxes: np.ndarray, out: np.ndarray) -> int:
     """The grid's boxes (`boxes`) that `box` of body row k overlaps, ascending, into `out`, picked
     from those kept for its fat box (`FatBoxes`); -1 if `box` is not inside it (`look_up_walls`

@@ -15,10 +15,13 @@ file only, but a kernel holds the code of every kernel it calls, from other file
 a checkout or an upgrade it would load a kernel built from the old callees. A new digest compiles
 afresh instead; the last few folders are kept, older ones removed.
 
-In a kernel called in a hot loop, arrays passed in should not die on different branches (no
-`and`/`or` chain or early return over them, no call that takes them on one branch only): numba then
-cannot cancel the reference counts it takes on them, and every call costs two atomic operations per
-array (a third of a fan of shots' time, before `grid.walls_near` was written so).
+numba counts references to every array a kernel is handed and cancels the counts it can prove
+balanced; it cannot when the arrays die on different branches (an `and`/`or` chain or an early
+return over them, a call that takes them on one branch only), and then every call costs two
+atomic operations per array. A *leaf* (`leaf_kernel`: it makes no array, returns only numbers, and
+calls only other leaves) is compiled without reference counting at all, so a call costs what its
+arithmetic does: the narrowphase's, the time of impact's and the solver's inner functions, called
+per piece and per point. numba refuses to compile a leaf that makes an array.
 
 Each kernel module registers a *warm-up*: a call with small, typical arguments that makes numba
 compile (or load from the cache) every kernel it defines with the argument types the engine uses.
@@ -55,10 +58,16 @@ ENGINE_DIR = Path(__file__).resolve().parents[1]
 KEEP_CACHES = 3  # cache folders of different sources kept side by side (the current one among them)
 
 
+# The engine's folders kernels and the constants they hold come from (the golf rules, assembly and
+# loading have none, and no kernel imports from them: editing those compiles nothing).
+KERNEL_SOURCES = ("physics", "systems", "components")
+
+
 def engine_fingerprint(root: Path = ENGINE_DIR) -> str:
-    """A digest of every source file under `root` (the engine), names and contents."""
+    """A digest of every source file of the engine's KERNEL_SOURCES folders under `root`, names
+    and contents."""
     digest = hashlib.sha256()
-    for path in sorted(root.rglob("*.py")):
+    for path in sorted(p for folder in KERNEL_SOURCES for p in (root / folder).rglob("*.py")):
         digest.update(path.relative_to(root).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
     return digest.hexdigest()[:16]
 
@@ -84,6 +93,7 @@ if COMPILED:
         pass
 
 WARM_UPS: list[tuple[str, Callable[[], None]]] = []
+LEAVES: list = []  # every `leaf_kernel` (a test checks what they return)
 
 
 def kernel(fn: F) -> F:
@@ -91,6 +101,16 @@ def kernel(fn: F) -> F:
     if numba is None:
         return fn
     return numba.njit(cache=True, nogil=True)(fn)
+
+
+def leaf_kernel(fn: F) -> F:
+    """A kernel that makes no array, returns only numbers (never an array, not even one handed in)
+    and calls only other leaves: compiled without numba's reference counting (see above)."""
+    if numba is None:
+        return fn
+    compiled = numba.njit(cache=True, nogil=True, _nrt=False)(fn)
+    LEAVES.append(compiled)
+    return compiled
 
 
 def inlined_kernel(fn: F) -> F:

@@ -28,17 +28,17 @@ from polygolf.engine.physics.body import (
     X,
     Y,
 )
-from polygolf.engine.physics.jit import kernel, warm_up
+from polygolf.engine.physics.jit import leaf_kernel, warm_up
 
 
-@kernel
+@leaf_kernel
 def _mark_start(state: np.ndarray, k: int) -> None:
     state[k, X0] = state[k, X]
     state[k, Y0] = state[k, Y]
     state[k, ANGLE0] = state[k, ANGLE]
 
 
-@kernel
+@leaf_kernel
 def advance(state: np.ndarray, settles: np.ndarray, dt: float, still_step: float, still_turn: float,
             speed_cap: float, time_to_rest: float) -> None:
     """x += v·dt for every awake body (plus the time continuous collision owes it), after putting to
@@ -75,7 +75,7 @@ def advance(state: np.ndarray, settles: np.ndarray, dt: float, still_step: float
         state[k, Y] += state[k, VY] * step
 
 
-@kernel
+@leaf_kernel
 def turn(state: np.ndarray, dt: float) -> None:
     """angle += ω·dt for every awake body that spins."""
     for k in range(state.shape[0]):
@@ -83,7 +83,7 @@ def turn(state: np.ndarray, dt: float) -> None:
             state[k, ANGLE] += state[k, SPIN] * dt
 
 
-@kernel
+@leaf_kernel
 def accelerate(state: np.ndarray, rows: np.ndarray, pushes: np.ndarray, which: np.ndarray, dt: float) -> None:
     """v += a·dt for each awake dynamic body of `rows`, with a = pushes[which[q]] (x, y), or none
     where which[q] < 0: gravity (one push for every body), the slope each ball is on."""
@@ -94,7 +94,7 @@ def accelerate(state: np.ndarray, rows: np.ndarray, pushes: np.ndarray, which: n
             state[k, VY] += pushes[p, 1] * dt
 
 
-@kernel
+@leaf_kernel
 def take_scale(state: np.ndarray, rows: np.ndarray, scales: np.ndarray, which: np.ndarray) -> None:
     """The drag scale of each body of `rows` is scales[which[q]] (the surface it is on), where
     which[q] >= 0."""
@@ -103,22 +103,31 @@ def take_scale(state: np.ndarray, rows: np.ndarray, scales: np.ndarray, which: n
             state[rows[q], DRAG_SCALE] = scales[which[q]]
 
 
-@kernel
+@leaf_kernel
 def decay(value: float, rate: float, resistance: float, dt: float) -> float:
     """Magnitude after dt under d|v|/dt = -rate·|v| - resistance, solved exactly; never below zero.
 
     |v|(dt) = (|v| + c/k)·exp(-k·dt) - c/k, or |v| - c·dt when k = 0."""
+    return _decayed(value, rate, resistance, dt, math.exp(-rate * dt) if rate > 0.0 else 1.0)
+
+
+@leaf_kernel
+def _decayed(value: float, rate: float, resistance: float, dt: float, shrink: float) -> float:
+    """`decay` given shrink = exp(-rate·dt) (worked out by the caller, who may have it already)."""
     if rate > 0.0:
-        after = (value + resistance / rate) * math.exp(-rate * dt) - resistance / rate
+        after = (value + resistance / rate) * shrink - resistance / rate
     else:
         after = value - resistance * dt
     return after if after > 0.0 else 0.0
 
 
-@kernel
+@leaf_kernel
 def drag(state: np.ndarray, rows: np.ndarray, rates: np.ndarray, dt: float) -> None:
     """Drag on each awake dynamic body of `rows`: `rates` per row are (linear, angular, rolling,
-    rolling_angular), each times the body's `drag_scale`, which is then reset to 1."""
+    rolling_angular), each times the body's `drag_scale`, which is then reset to 1. (Balls on one
+    green share their rates: each exp(-rate·dt) is worked out when the rate differs from the last
+    body's, not once a body.)"""
+    linear_rate, linear_shrink, angular_rate, angular_shrink = math.nan, 1.0, math.nan, 1.0
     for q in range(rows.shape[0]):
         k = rows[q]
         if state[k, ASLEEP] != 0.0 or state[k, INV_MASS] == 0.0:
@@ -130,16 +139,27 @@ def drag(state: np.ndarray, rows: np.ndarray, rates: np.ndarray, dt: float) -> N
             vx, vy = state[k, VX], state[k, VY]
             speed = math.hypot(vx, vy)
             if speed > 0.0:
-                factor = decay(speed, linear * scale, rolling * scale, dt) / speed
+                rate = linear * scale
+                if rate != linear_rate and rate > 0.0:
+                    linear_rate, linear_shrink = rate, math.exp(-rate * dt)
+                factor = _decayed(speed, rate, rolling * scale, dt, linear_shrink) / speed
                 state[k, VX] = vx * factor
                 state[k, VY] = vy * factor
         spin = state[k, SPIN]
         if (angular or rolling_angular) and spin:
-            turned = decay(abs(spin), angular * scale, rolling_angular * scale, dt)
+            rate = angular * scale
+            if rate != angular_rate and rate > 0.0:
+                angular_rate, angular_shrink = rate, math.exp(-rate * dt)
+            turned = _decayed(abs(spin), rate, rolling_angular * scale, dt, angular_shrink)
             state[k, SPIN] = math.copysign(turned, spin)
 
 
-@kernel
+# Squared distances within this factor of a cup's squared radius are decided by the exact distance
+# (math.hypot, within an ulp; the sum of squares, within a few): far wider than either can be off.
+_NEARLY = 1.0 + 1e-9
+
+
+@leaf_kernel
 def captured(state: np.ndarray, rows: np.ndarray, cups: np.ndarray, out: np.ndarray) -> int:
     """For each awake body of `rows`, the first cup (x, y, radius, max_speed) its centre is over
     slowly enough to drop in, or -1: at most `max_speed` over the centre, falling linearly to zero at
@@ -151,7 +171,10 @@ def captured(state: np.ndarray, rows: np.ndarray, cups: np.ndarray, out: np.ndar
         if state[k, ASLEEP] != 0.0:
             continue
         for c in range(cups.shape[0]):
-            distance = math.hypot(state[k, X] - cups[c, 0], state[k, Y] - cups[c, 1])
+            dx, dy = state[k, X] - cups[c, 0], state[k, Y] - cups[c, 1]
+            if not dx * dx + dy * dy < cups[c, 2] * cups[c, 2] * _NEARLY:
+                continue  # well outside: no need of the exact distance
+            distance = math.hypot(dx, dy)
             if distance < cups[c, 2]:
                 share = 1.0 - distance / cups[c, 2]
                 if math.hypot(state[k, VX], state[k, VY]) < cups[c, 3] * (share if share > 0.0 else 0.0):
@@ -161,7 +184,7 @@ def captured(state: np.ndarray, rows: np.ndarray, cups: np.ndarray, out: np.ndar
     return caught
 
 
-@kernel
+@leaf_kernel
 def kinetic_energy(state: np.ndarray) -> tuple[float, bool]:
     """The bodies' kinetic energy (summed in row order) and whether every pose and energy is finite."""
     total, finite = 0.0, True
@@ -177,7 +200,7 @@ def kinetic_energy(state: np.ndarray) -> tuple[float, bool]:
     return total, finite
 
 
-@kernel
+@leaf_kernel
 def rewind(state: np.ndarray, rows: np.ndarray, hits: np.ndarray) -> int:
     """Each body q of `rows` with hits[q] < 1 goes back to that fraction of its motion this substep
     (continuous collision's time of impact). A dynamic body owes the rest of its motion's time
@@ -200,7 +223,7 @@ def rewind(state: np.ndarray, rows: np.ndarray, hits: np.ndarray) -> int:
     return count
 
 
-@kernel
+@leaf_kernel
 def wake_pairs(state: np.ndarray, pairs: np.ndarray) -> None:
     """Pair by pair, in order: if either body is at rest, wake both (a body that touches a moving one
     is moving again)."""
@@ -211,7 +234,7 @@ def wake_pairs(state: np.ndarray, pairs: np.ndarray) -> None:
             state[a, STILL_TIME] = state[b, STILL_TIME] = 0.0
 
 
-@kernel
+@leaf_kernel
 def mark_touching(settles: np.ndarray, ents: np.ndarray, lookup: np.ndarray) -> None:
     """settles[lookup[entity]] = True for every entity of a contact table's pairs (`ents`) that has a
     row (the static world, -1, has none)."""
@@ -222,7 +245,7 @@ def mark_touching(settles: np.ndarray, ents: np.ndarray, lookup: np.ndarray) -> 
                 settles[lookup[ent]] = True
 
 
-@kernel
+@leaf_kernel
 def came_to_rest(state: np.ndarray, rows: np.ndarray, was_asleep: np.ndarray, out: np.ndarray) -> int:
     """The bodies of `rows` (indices into it, into `out`) at rest now that were not when `was_asleep`
     was last updated (it is, here). Returns how many."""

@@ -62,7 +62,7 @@ from polygolf.engine.physics.contact import (
     Manifold,
     table_of,
 )
-from polygolf.engine.physics.jit import kernel, warm_up
+from polygolf.engine.physics.jit import kernel, leaf_kernel, warm_up
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import BLOCK_MAX_CONDITION, LINEAR_SLOP, MAX_CORRECTION, POSITION_BETA
 
@@ -79,19 +79,19 @@ _CORRECTIONS = {"split": SPLIT, "ngs": NGS, "none": NO_CORRECTION}
 
 # --- small pieces --------------------------------------------------------------------------------
 
-@kernel
+@leaf_kernel
 def _max(a: float, b: float) -> float:
     """Python's max(a, b): the first unless the second is larger (so max(-0.0, 0.0) is -0.0)."""
     return b if b > a else a
 
 
-@kernel
+@leaf_kernel
 def _min(a: float, b: float) -> float:
     """Python's min(a, b): the first unless the second is smaller."""
     return b if b < a else a
 
 
-@kernel
+@leaf_kernel
 def _relative_velocity(bodies: np.ndarray, a: int, b: int, col: int, rax: float, ray: float, rbx: float,
                        rby: float) -> tuple[float, float]:
     """Velocity of B's point rb relative to A's point ra; `col` = B_VX for velocities, B_PUSH_X for
@@ -100,7 +100,7 @@ def _relative_velocity(bodies: np.ndarray, a: int, b: int, col: int, rax: float,
             bodies[b, col + 1] + bodies[b, col + 2] * rbx - bodies[a, col + 1] - bodies[a, col + 2] * rax)
 
 
-@kernel
+@leaf_kernel
 def _apply(bodies: np.ndarray, a: int, b: int, col: int, px: float, py: float, rax: float, ray: float, rbx: float,
            rby: float) -> None:
     """Apply impulse P at a point: -P to A, +P to B (to velocities or pseudo-velocities, by `col`)."""
@@ -112,13 +112,13 @@ def _apply(bodies: np.ndarray, a: int, b: int, col: int, px: float, py: float, r
     bodies[b, col + 2] += bodies[b, B_INV_INERTIA] * (rbx * py - rby * px)
 
 
-@kernel
+@leaf_kernel
 def _push_target(separation: float, dt: float, beta: float, slop: float, max_push: float) -> float:
     """The pseudo-velocity that removes `beta` of the overlap beyond `slop` (at most `max_push`) in dt."""
     return _min(beta * _max(-(separation + slop), 0.0), max_push) / dt
 
 
-@kernel
+@leaf_kernel
 def _kinetic_energy(bodies: np.ndarray, k: int) -> float:
     if not bodies[k, B_INV_MASS] > 0.0:
         return 0.0
@@ -126,7 +126,7 @@ def _kinetic_energy(bodies: np.ndarray, k: int) -> float:
     return 0.5 * (bodies[k, B_MASS] * (vx * vx + vy * vy) + bodies[k, B_INERTIA] * spin * spin)
 
 
-@kernel
+@leaf_kernel
 def solve_block(k11: float, k12: float, k22: float, b1: float, b2: float, a1: float, a2: float
                 ) -> tuple[float, float]:
     """Solve the two-point LCP  w = K x + b,  x >= 0,  w >= 0,  x·w = 0  by enumerating its four cases.
@@ -153,7 +153,7 @@ def solve_block(k11: float, k12: float, k22: float, b1: float, b2: float, a1: fl
 
 # --- islands and the shock chain ------------------------------------------------------------------
 
-@kernel
+@leaf_kernel
 def _root(parent: np.ndarray, key: int) -> int:
     while parent[key] != key:
         parent[key] = parent[parent[key]]
@@ -292,7 +292,7 @@ def _shock_chain(bodies: np.ndarray, pair: np.ndarray, level: np.ndarray, order:
     return n
 
 
-@kernel
+@leaf_kernel
 def _propagate_shock(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray,
                      points: np.ndarray, chain: np.ndarray, a_grounded: np.ndarray, n: int, pushes: bool,
                      dt: float, beta: float, slop: float, max_push: float) -> None:
@@ -331,7 +331,7 @@ def _propagate_shock(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, 
 
 # --- one island's stages --------------------------------------------------------------------------
 
-@kernel
+@leaf_kernel
 def _prepare(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray, block: np.ndarray,
              points: np.ndarray, order: np.ndarray, s: int, e: int, max_condition: float) -> None:
     """Lever arms, effective masses and approach speeds; the block matrix of two-point manifolds,
@@ -372,7 +372,7 @@ def _prepare(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: n
             block[k] = k11 * k11 < max_condition * det
 
 
-@kernel
+@leaf_kernel
 def _warm_start(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray, points: np.ndarray,
                 order: np.ndarray, s: int, e: int) -> None:
     """Re-apply the impulses carried over from last substep."""
@@ -386,7 +386,7 @@ def _warm_start(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, first
                        points[p, P_RA_Y], points[p, P_RB_X], points[p, P_RB_Y])
 
 
-@kernel
+@leaf_kernel
 def _normal_block(bodies: np.ndarray, a: int, b: int, col: int, nx: float, ny: float, manifold: np.ndarray,
                   points: np.ndarray, p1: int, impulse: int, t1: float, t2: float) -> None:
     """A two-point manifold's normal impulses as one 2x2 complementarity problem, driving the
@@ -409,7 +409,7 @@ def _normal_block(bodies: np.ndarray, a: int, b: int, col: int, nx: float, ny: f
            points[p2, P_RB_Y])
 
 
-@kernel
+@leaf_kernel
 def _normal_point(bodies: np.ndarray, a: int, b: int, col: int, nx: float, ny: float, points: np.ndarray, p: int,
                   impulse: int, target: float) -> None:
     """One point's normal impulse, accumulated and clamped at zero, driving the (pseudo-)velocity
@@ -423,7 +423,7 @@ def _normal_point(bodies: np.ndarray, a: int, b: int, col: int, nx: float, ny: f
     _apply(bodies, a, b, col, lam * nx, lam * ny, rax, ray, rbx, rby)
 
 
-@kernel
+@leaf_kernel
 def _solve_velocities(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray,
                       block: np.ndarray, points: np.ndarray, order: np.ndarray, s: int, e: int,
                       friction: bool) -> None:
@@ -452,7 +452,7 @@ def _solve_velocities(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray,
                 _normal_point(bodies, a, b, B_VX, nx, ny, points, p, P_NORMAL_IMPULSE, 0.0)
 
 
-@kernel
+@leaf_kernel
 def _solve_split(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, first: np.ndarray, block: np.ndarray,
                  points: np.ndarray, order: np.ndarray, s: int, e: int, dt: float, beta: float, slop: float,
                  max_push: float) -> None:
@@ -477,7 +477,7 @@ def _solve_split(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, firs
             _normal_point(bodies, a, b, B_PUSH_X, nx, ny, points, p, P_PUSH_IMPULSE, target)
 
 
-@kernel
+@leaf_kernel
 def _solve_ngs(bodies: np.ndarray, pair: np.ndarray, first: np.ndarray, points: np.ndarray, order: np.ndarray,
                s: int, e: int, beta: float, slop: float, max_correction: float) -> None:
     """One sweep of non-linear Gauss-Seidel (Box2D v2's position solver): re-measure each point's

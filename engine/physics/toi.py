@@ -20,7 +20,7 @@ import numpy as np
 from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, COLUMNS, INV_MASS, SPIN, VX, VY, X0, Y0, X, Y
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
 from polygolf.engine.physics.grid import BoxGrid, FatBoxes, look_up_walls, walls_near
-from polygolf.engine.physics.jit import kernel, warm_up
+from polygolf.engine.physics.jit import kernel, leaf_kernel, warm_up
 from polygolf.engine.physics.settings import GAP_TOLERANCE
 
 MAX_ITERATIONS = 24
@@ -28,7 +28,7 @@ NO_HIT = 2.0  # any fraction >= 1: the motion ends before an impact
 _CLEARANCE = 1e-6  # m: beyond rounding, for the bounding circle's quick answer
 
 
-@kernel
+@leaf_kernel
 def _face_separations(verts: np.ndarray, normals: np.ndarray, others: np.ndarray, count: int, other_count: int,
                       seps: np.ndarray, at: int) -> None:
     """Separation of the first `other_count` rows of `others` from each of the first `count` faces,
@@ -44,7 +44,7 @@ def _face_separations(verts: np.ndarray, normals: np.ndarray, others: np.ndarray
         seps[at + i] = lowest
 
 
-@kernel
+@leaf_kernel
 def _separations(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, xa: float, ya: float, aa: float,
                  lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, xb: float, yb: float, ab: float, b_posed: bool,
                  pa_v: np.ndarray, pa_n: np.ndarray, pb_v: np.ndarray, pb_n: np.ndarray, b_first: bool,
@@ -72,7 +72,7 @@ def _separations(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, xa: float, 
     return best
 
 
-@kernel
+@leaf_kernel
 def _advance(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, start_a: np.ndarray, end_a: np.ndarray,
              lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, start_b: np.ndarray, end_b: np.ndarray,
              b_posed: bool, rates: np.ndarray, target: float, tolerance: float, allowance: float,
@@ -133,7 +133,7 @@ def toi_work(vertices: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndar
             np.empty((4, 3)))
 
 
-@kernel
+@leaf_kernel
 def widest(first: np.ndarray) -> int:
     """The most vertices of any piece of a set (rows `first`)."""
     most = 0
@@ -142,7 +142,7 @@ def widest(first: np.ndarray) -> int:
     return most
 
 
-@kernel
+@leaf_kernel
 def wall_out_of_reach(reach: float, start: np.ndarray, end: np.ndarray, wv: np.ndarray, wn: np.ndarray, ws: int,
                       we: int, target: float, tolerance: float, rates: np.ndarray) -> bool:
     """`time_of_impact`'s quick answer: per unit of t, how fast the piece (bounding radius `reach`
@@ -162,7 +162,7 @@ def wall_out_of_reach(reach: float, start: np.ndarray, end: np.ndarray, wv: np.n
     return beyond
 
 
-@kernel
+@leaf_kernel
 def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float, start: np.ndarray,
                    end: np.ndarray, wv: np.ndarray, wn: np.ndarray, ws: int, we: int, target: float, tolerance: float,
                    allowance: float, work: tuple) -> float:
@@ -188,7 +188,7 @@ def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float,
                     allowance, rates, False, work)
 
 
-@kernel
+@leaf_kernel
 def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reach_a: float, start_a: np.ndarray,
                         end_a: np.ndarray, lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, reach_b: float,
                         start_b: np.ndarray, end_b: np.ndarray, target: float, tolerance: float, allowance: float,
@@ -272,7 +272,7 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
     return moved, hits
 
 
-@kernel
+@leaf_kernel
 def first_pair_hit(lva: np.ndarray, lna: np.ndarray, fa: np.ndarray, ra: np.ndarray, start_a: np.ndarray,
                    end_a: np.ndarray, lvb: np.ndarray, lnb: np.ndarray, fb: np.ndarray, rb: np.ndarray,
                    start_b: np.ndarray, end_b: np.ndarray, target: float, tolerance: float, allowance: float,
@@ -344,7 +344,7 @@ def body_pair_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.
     return count
 
 
-@kernel
+@leaf_kernel
 def reaches_wall(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, x: float, y: float,
                  angle: float, vx: float, vy: float, spin: float, dt: float, wv: np.ndarray, wn: np.ndarray, ws: int,
                  we: int, work: tuple) -> bool:

@@ -86,7 +86,7 @@ def _file(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int
     return first, items, np.nonzero(large)[0]
 
 
-@kernel
+@leaf_kernel
 def overlapping(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int, cell_first: np.ndarray,
            cell_items: np.ndarray, large: np.ndarray, box: np.ndarray, seen: np.ndarray, out: np.ndarray) -> int:
     """Indices of the boxes overlapping `box` into `out`, ascending; returns how many. `seen` (one
@@ -122,12 +122,16 @@ def overlapping(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny
     return count
 
 
-@kernel
+@leaf_kernel
 def _sort_few(values: np.ndarray, count: int) -> None:
     """values[:count] in ascending order: by insertion while they are few (a query's usual answer,
-    mostly in order already), else by the library's sort."""
+    mostly in order already), else by heapsort (in place: a leaf makes no array)."""
     if count > 16:
-        values[:count].sort()
+        for root in range(count // 2 - 1, -1, -1):
+            _sift_down(values, root, count)
+        for end in range(count - 1, 0, -1):
+            values[0], values[end] = values[end], values[0]
+            _sift_down(values, 0, end)
         return
     for a in range(1, count):
         v = values[a]
@@ -136,6 +140,19 @@ def _sort_few(values: np.ndarray, count: int) -> None:
             values[b + 1] = values[b]
             b -= 1
         values[b + 1] = v
+
+
+@leaf_kernel
+def _sift_down(values: np.ndarray, root: int, end: int) -> None:
+    """Heapsort's step: values[root] down the max-heap values[:end] to its place."""
+    while 2 * root + 1 < end:
+        child = 2 * root + 1
+        if child + 1 < end and values[child] < values[child + 1]:
+            child += 1
+        if values[root] >= values[child]:
+            return
+        values[root], values[child] = values[child], values[root]
+        root = child
 
 
 class FatBoxes:
@@ -183,13 +200,13 @@ def walls_near(fat: np.ndarray, walls: np.ndarray, k: int, box: np.ndarray, boxe
     return count if inside else -1
 
 
-@kernel
-def look_up_walls(grid: tuple, fat: np.ndarray, walls: np.ndarray, k: int, box: np.ndarray, seen: np.ndarray,
-                  scratch: np.ndarray, out: np.ndarray) -> int:
+@leaf_kernel
+def look_up_walls(grid: tuple, fat: np.ndarray, walls: np.ndarray, k: int, box: np.ndarray, wide: np.ndarray,
+                  seen: np.ndarray, scratch: np.ndarray, out: np.ndarray) -> int:
     """`walls_near` when `box` has left body row k's fat box: the grid is asked for the box grown by
-    FAT_MARGIN, the answer kept, and the walls `box` meets picked from it (the same answer as asking
-    for `box`, in the same order). A body with more than the table keeps near it asks for `box`."""
-    wide = np.empty(4)
+    FAT_MARGIN (into `wide`), the answer kept, and the walls `box` meets picked from it (the same
+    answer as asking for `box`, in the same order). A body with more than the table keeps near it
+    asks for `box`."""
     wide[0], wide[1] = box[0] - FAT_MARGIN, box[1] - FAT_MARGIN
     wide[2], wide[3] = box[2] + FAT_MARGIN, box[3] + FAT_MARGIN
     n = overlapping(*grid, wide, seen, scratch)
@@ -198,19 +215,9 @@ def look_up_walls(grid: tuple, fat: np.ndarray, walls: np.ndarray, k: int, box: 
         return overlapping(*grid, box, seen, out)
     fat[k, 0], fat[k, 1], fat[k, 2], fat[k, 3] = wide[0], wide[1], wide[2], wide[3]
     walls[k, 0] = n
-    walls[k, 1:n + 1] = scratch[:n]
+    for m in range(n):
+        walls[k, 1 + m] = scratch[m]
     return walls_near(fat, walls, k, box, grid[0], out)
-
-
-@kernel
-def _append(found: np.ndarray, total: int, items: np.ndarray, n: int) -> np.ndarray:
-    """items[:n] after the first `total` of `found`, grown (doubled) as needed; the array to use."""
-    while total + n > len(found):
-        grown = np.empty(2 * len(found), dtype=np.int64)
-        grown[:total] = found[:total]
-        found = grown
-    found[total:total + n] = items[:n]
-    return found
 
 
 @kernel
@@ -225,28 +232,59 @@ def bodies_near(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, margin:
     `seen` and `scratch`: the grid query's, one row per box; `near` and `first` need len(rows)
     and len(rows) + 1 rows. Returns `found` (grown if it had to) and how many bodies have boxes
     near."""
-    box = np.empty(4)
+    both = np.empty((2, 4))
+    first[0] = 0
+    q, bodies, total = 0, 0, 0
+    while True:
+        q, bodies, total, waiting = _fill_near(state, rows, radius, margin, grid, fat_boxes, seen, scratch, near,
+                                               first, found, both, q, bodies, total)
+        if waiting == 0:
+            return found, bodies
+        grown = np.empty(2 * len(found) + waiting, dtype=np.int64)  # room for the body that did not fit
+        grown[:total] = found[:total]
+        found = grown
+        q, bodies, total = _put_near(scratch, waiting, near, first, found, q, bodies, total)
+
+
+@leaf_kernel
+def _fill_near(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, margin: float, grid: tuple,
+               fat_boxes: tuple, seen: np.ndarray, scratch: np.ndarray, near: np.ndarray, first: np.ndarray,
+               found: np.ndarray, both: np.ndarray, q: int, bodies: int, total: int) -> tuple[int, int, int, int]:
+    """`bodies_near`'s work from body q on, until a body's boxes do not fit in `found`: returns
+    where it got to (q, bodies, total) and how many boxes wait in `scratch` for room (0: done)."""
+    box, wide = both[0], both[1]
     fat, walls = fat_boxes
     boxes = grid[0]
-    bodies, total = 0, 0
-    first[0] = 0
-    for q in range(len(rows)):
+    while q < len(rows):
         k = rows[q]
         if state[k, ASLEEP] != 0.0 or state[k, INV_MASS] == 0.0:
+            q += 1
             continue
         r = radius[q] + margin
         box[0], box[1], box[2], box[3] = state[k, X] - r, state[k, Y] - r, state[k, X] + r, state[k, Y] + r
         n = walls_near(fat, walls, k, box, boxes, scratch)
         if n < 0:
-            n = look_up_walls(grid, fat, walls, k, box, seen, scratch, scratch)
+            n = look_up_walls(grid, fat, walls, k, box, wide, seen, scratch, scratch)
         if n == 0:
+            q += 1
             continue
-        found = _append(found, total, scratch, n)
-        total += n
-        near[bodies] = q
-        bodies += 1
-        first[bodies] = total
-    return found, bodies
+        if total + n > len(found):
+            return q, bodies, total, n
+        q, bodies, total = _put_near(scratch, n, near, first, found, q, bodies, total)
+    return q, bodies, total, 0
+
+
+@leaf_kernel
+def _put_near(scratch: np.ndarray, n: int, near: np.ndarray, first: np.ndarray, found: np.ndarray, q: int,
+              bodies: int, total: int) -> tuple[int, int, int]:
+    """Body q's n boxes (from `scratch`) after the first `total` of `found`; where `bodies_near` goes on."""
+    for m in range(n):
+        found[total + m] = scratch[m]
+    total += n
+    near[bodies] = q
+    bodies += 1
+    first[bodies] = total
+    return q + 1, bodies, total
 
 
 @kernel

@@ -206,12 +206,12 @@ def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reac
                     tolerance, allowance, at_start, measured, work)
 
 
-@kernel
+@leaf_kernel
 def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
                     state: np.ndarray, rows: np.ndarray, radius: np.ndarray, least: float, grid: tuple,
                     fat_boxes: tuple, seen: np.ndarray, found: np.ndarray, wv: np.ndarray, wn: np.ndarray,
                     wfirst: np.ndarray, target: float, tolerance: float, allowance: float, far: float,
-                    out: np.ndarray, work: tuple) -> tuple[bool, int]:
+                    out: np.ndarray, work: tuple, boxes: np.ndarray) -> tuple[bool, int]:
     """For each body q of `rows` (a `body.BodyStore` state, from its pose at the substep's start to
     its pose now; shape q of a `ShapeTable`, bounding radius radius[q]), the earliest impact of any
     of its pieces with the wall pieces its swept box meets in `grid` (the walls' `BoxGrid.arrays`,
@@ -220,7 +220,8 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
     `least` (the discrete contact handles small steps), into `out` (the caller's, kept between
     substeps).
     `seen` and `found`: the grid query's scratch, one row per wall piece; `work`: the time of
-    impact's (`toi_work` for the widest piece of either set), kept by the caller. Returns whether
+    impact's (`toi_work` for the widest piece of either set); `boxes`: room for two boxes (a
+    leaf makes no array); all kept by the caller. Returns whether
     an awake body stepped `far` or more, and how many bodies hit.
 
     A body's step is its centre's path plus its turn at its bounding radius. The path's length is
@@ -230,7 +231,7 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
     out[:] = 1.0
     moved = False
     hits = 0
-    box = np.empty(4)
+    box, wide = boxes[0], boxes[1]
     fat, walls = fat_boxes
     boxes = grid[0]
     start, end = work[4][0], work[4][1]
@@ -250,7 +251,7 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
         box[0], box[1], box[2], box[3] = min(x0, x1) - r, min(y0, y1) - r, max(x0, x1) + r, max(y0, y1) + r
         count = walls_near(fat, walls, k, box, boxes, found)
         if count < 0:
-            count = look_up_walls(grid, fat, walls, k, box, seen, found, found)
+            count = look_up_walls(grid, fat, walls, k, box, wide, seen, found, found)
         if count == 0:
             continue
         start[0], start[1], start[2] = x0, y0, a0
@@ -472,7 +473,7 @@ def _warm() -> None:
     first_wall_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                     table.body_first, state, np.array([0, 1], dtype=np.int64), np.full(2, 0.71), 0.005, grid.arrays,
                     FatBoxes().of(state, 1), np.zeros(1, dtype=np.bool_), np.empty(1, dtype=np.int64), wall.verts,
-                    wall.normals, wall.first, 0.005, 0.001, 0.005, 0.0025, np.empty(2), toi_work(4))
+                    wall.normals, wall.first, 0.005, 0.001, 0.005, 0.0025, np.empty(2), toi_work(4), np.empty((2, 4)))
     first_pair_hit(*args, start, end, *args, still, still, 0.005, 0.001, 0.005, toi_work(4))
     body_pair_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                    table.body_first, np.array([[0, 1]], dtype=np.int64), state, np.array([0, 1], dtype=np.int64),

@@ -32,13 +32,14 @@ class CCDProcessor(esper.Processor):
         self._seen, self._found = np.zeros(walls, dtype=np.bool_), np.empty(walls, dtype=np.int64)
         self.shapes, self.bodies, self.fat_boxes = res.shapes, res.bodies, res.fat_boxes
         self._hits = np.empty(0)  # each body's time of impact this substep, kept between substeps
+        self._boxes = np.empty((2, 4))  # a body's swept box and its grown box (the grid query's)
         self._work: tuple = ()  # the time of impact's scratch, for the widest piece of a body or a wall
         self._table = None  # the shape table it is for
 
     def inputs(self) -> tuple:
         """What `sweep` reads besides the state, the shapes, the walls and the fat boxes: the grid
-        query's scratch, the times of impact's array and scratch, whether there are pairs to sweep
-        and whether bodies meet each other."""
+        query's scratch, the times of impact's array and scratch, room for two boxes, whether
+        there are pairs to sweep and whether bodies meet each other."""
         bodies = esper.get_components(Body, Collider)
         _, table, rows = self.shapes.current(self.bodies, esper.get_component(Body), bodies)
         if len(self._hits) != len(rows):
@@ -46,7 +47,8 @@ class CCDProcessor(esper.Processor):
         if table is not self._table:
             widest = max(np.diff(table.pieces.first).max(initial=0), np.diff(self.statics.pieces.first).max(initial=0))
             self._work, self._table = toi_work(int(widest)), table
-        return self._seen, self._found, self._hits, self._work, len(bodies) > 1, self.config.collide_bodies
+        return (self._seen, self._found, self._hits, self._work, self._boxes, len(bodies) > 1,
+                self.config.collide_bodies)
 
     def process(self) -> None:
         inputs = self.inputs()  # first: it gathers the state
@@ -61,11 +63,11 @@ def sweep(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inpu
     how many bodies went back."""
     lv, ln, first, reach, body_first, rows, radius, _, _, _, _ = shapes
     (wv, wn, wfirst, _, _), _, _, _, _, grid = walls
-    seen, found, hits, work, several, _ = inputs
+    seen, found, hits, work, boxes, several, _ = inputs
     # No pair can need sweeping while no body steps half the linear slop.
     moved, count = first_wall_hits(lv, ln, first, reach, body_first, state, rows, radius, LINEAR_SLOP, grid,
                                    fat_boxes, seen, found, wv, wn, wfirst, TOI_TARGET, 0.25 * LINEAR_SLOP,
-                                   LINEAR_SLOP, 0.5 * LINEAR_SLOP, hits, work)
+                                   LINEAR_SLOP, 0.5 * LINEAR_SLOP, hits, work, boxes)
     if several and moved:
         count += _body_hits(state, shapes, walls, inputs)
     return rewind(state, rows, hits) if count else 0
@@ -78,7 +80,7 @@ def _body_hits(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple) ->
     crush the ball it meets stalls too. Returns how many pairs hit."""
     lv, ln, first, reach, body_first, rows, radius, thickness, _, _, _ = shapes
     (wv, wn, wfirst, _, _), _, _, _, _, grid = walls
-    seen, found, hits, _, _, meet = inputs
+    seen, found, hits, _, _, _, meet = inputs
     pairs = body_pairs(state, rows, radius, TOI_TARGET, True, meet, True)
     arm_hits = np.empty(len(pairs))
     count = body_pair_hits(lv, ln, first, reach, body_first, pairs, state, rows, radius, thickness, meet, LINEAR_SLOP,

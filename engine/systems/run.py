@@ -185,7 +185,7 @@ def _idle_inputs() -> tuple:
         (ints, areas.verts, areas.first, areas.boxes, floats, ints.copy()),  # sand
         (ints, areas.verts, areas.first, areas.boxes, floats, ints.copy()),  # ice
         (ints, np.zeros((0, 4))),  # drag
-        (flags, ints, floats, _no_work(), False, True),  # ccd
+        (flags, ints, floats, _no_work(), np.empty((2, 4)), False, True),  # ccd
         (flags, ints, ints, np.zeros(1, dtype=np.int64), np.zeros((0, 2), dtype=np.int64), False, True),  # broadphase
         (False, True),  # narrowphase
         (True, 1, 1, 0, True),  # resolve

@@ -142,3 +142,11 @@ def test_a_query_s_answer_is_sorted_however_many_it_holds():
         expected = np.concatenate([np.sort(values[:count]), values[count:]])
         _sort_few(values, count)
         assert np.array_equal(values, expected), count
+
+
+def test_a_crowd_with_more_pairs_than_first_room_for_still_pairs_every_two():
+    """Sixty boxes heaped on each other: 1770 pairs, more than the grid's pair search first makes
+    room for (four a box), so it must start again with more."""
+    items = [(0.01 * k, 0.0, 1.0 + 0.01 * k, 1.0) for k in range(60)]
+    _check_box_pairs(items, [True] * 60)
+    assert len(box_pairs(np.array(items), np.ones(60, dtype=np.bool_))) == 60 * 59 // 2

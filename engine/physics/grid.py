@@ -64,6 +64,18 @@ def _file(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int
     large to file cell by cell."""
     counts = np.zeros(nx * ny + 1, dtype=np.int64)
     large = np.zeros(len(boxes), dtype=np.bool_)
+    _count_cells(boxes, x0, y0, inv, nx, ny, counts, large)
+    first = np.cumsum(counts)
+    items = np.empty(first[-1], dtype=np.int64)
+    fill = first[:-1].copy()
+    _fill_cells(boxes, x0, y0, inv, nx, ny, large, fill, items)
+    return first, items, np.nonzero(large)[0]
+
+
+@leaf_kernel
+def _count_cells(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int, counts: np.ndarray,
+                 large: np.ndarray) -> None:
+    """`_file`'s first pass: how many boxes each cell holds (counts[cell + 1]), and which are too large."""
     for i in range(len(boxes)):
         cx0, cy0, cx1, cy1 = _cell_range(boxes[i], x0, y0, inv, nx, ny)
         if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > MAX_CELLS:
@@ -72,9 +84,12 @@ def _file(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int
         for cy in range(cy0, cy1 + 1):
             for cx in range(cx0, cx1 + 1):
                 counts[cy * nx + cx + 1] += 1
-    first = np.cumsum(counts)
-    items = np.empty(first[-1], dtype=np.int64)
-    fill = first[:-1].copy()
+
+
+@leaf_kernel
+def _fill_cells(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int, large: np.ndarray,
+                fill: np.ndarray, items: np.ndarray) -> None:
+    """`_file`'s second pass: each box into the rows of the cells it touches (fill: each cell's next row)."""
     for i in range(len(boxes)):
         if large[i]:
             continue
@@ -83,7 +98,6 @@ def _file(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int
             for cx in range(cx0, cx1 + 1):
                 items[fill[cy * nx + cx]] = i
                 fill[cy * nx + cx] += 1
-    return first, items, np.nonzero(large)[0]
 
 
 @leaf_kernel
@@ -346,7 +360,18 @@ def _hashed_pairs(boxes: np.ndarray, active: np.ndarray, cell: float) -> np.ndar
     cell_first, cell_items, large = _file(boxes, x0, y0, inv, nx, ny)
     if len(large):  # cannot happen (no box is larger than a cell); were it to, the sweep still answers
         return _swept_pairs(boxes, active)
-    pairs = np.empty((16, 2), dtype=np.int64)
+    pairs = np.empty((max(16, 4 * len(boxes)), 2), dtype=np.int64)
+    count = _cell_pairs(boxes, active, x0, y0, inv, nx, ny, cell_first, cell_items, pairs)
+    while count < 0:  # more pairs than room: again with twice the room
+        pairs = np.empty((2 * len(pairs), 2), dtype=np.int64)
+        count = _cell_pairs(boxes, active, x0, y0, inv, nx, ny, cell_first, cell_items, pairs)
+    return _sorted_pairs(pairs, count, len(boxes))
+
+
+@leaf_kernel
+def _cell_pairs(boxes: np.ndarray, active: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int,
+                cell_first: np.ndarray, cell_items: np.ndarray, pairs: np.ndarray) -> int:
+    """`_hashed_pairs`' search, cell by cell, into `pairs`; how many, or -1 if they do not fit."""
     count = 0
     for c in range(nx * ny):
         for a in range(cell_first[c], cell_first[c + 1]):
@@ -357,9 +382,11 @@ def _hashed_pairs(boxes: np.ndarray, active: np.ndarray, cell: float) -> np.ndar
                     continue
                 corner_x, corner_y = max(boxes[i, 0], boxes[j, 0]), max(boxes[i, 1], boxes[j, 1])
                 if _cell(corner_y, y0, inv, ny) * nx + _cell(corner_x, x0, inv, nx) == c:
-                    pairs = _add_pair(pairs, count, i, j)
+                    if count == len(pairs):
+                        return -1
+                    pairs[count, 0], pairs[count, 1] = min(i, j), max(i, j)
                     count += 1
-    return _sorted_pairs(pairs, count, len(boxes))
+    return count
 
 
 SWEEP_BELOW = 48  # fewer boxes than this: the sweep is as quick as filing them in a grid

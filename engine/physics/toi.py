@@ -362,7 +362,19 @@ def reaches_wall(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.nd
     return False
 
 
-@kernel
+@leaf_kernel
+def _closes(move_a: np.ndarray, move_b: np.ndarray, pose_a: np.ndarray, pose_b: np.ndarray, speed: float,
+            allowed: bool, dt: float, gap: float) -> bool:
+    """Whether `pair_reaches` tries the motion to (move_a, move_b): allowed, fast enough to close the
+    gap within dt (`speed`: the most it closes it by, per second), and a motion at all."""
+    still = True
+    for k in range(3):
+        if move_a[k] != pose_a[k] or move_b[k] != pose_b[k]:
+            still = False
+    return allowed and speed * dt >= gap + GAP_TOLERANCE and not still
+
+
+@leaf_kernel
 def pair_reaches(lva: np.ndarray, lna: np.ndarray, fa: np.ndarray, ra: np.ndarray, radius_a: float,
                  pose_a: np.ndarray, vel_a: np.ndarray, lvb: np.ndarray, lnb: np.ndarray, fb: np.ndarray,
                  rb: np.ndarray, radius_b: float, pose_b: np.ndarray, vel_b: np.ndarray, dt: float, gap: float,
@@ -385,15 +397,10 @@ def pair_reaches(lva: np.ndarray, lna: np.ndarray, fa: np.ndarray, ra: np.ndarra
     moves_b = (end_b, end_b, pose_b)
     speeds = (math.hypot(vel_a[0] - vel_b[0], vel_a[1] - vel_b[1]) + turn_a + turn_b,
               math.hypot(vel_b[0], vel_b[1]) + turn_b, math.hypot(vel_a[0], vel_a[1]) + turn_a)
-    allowed = (True, may_halt_a, may_halt_b)
-    use = np.zeros(3, dtype=np.bool_)
-    for m in range(3):
-        still = True
-        for k in range(3):
-            if moves_a[m][k] != pose_a[k] or moves_b[m][k] != pose_b[k]:
-                still = False
-        use[m] = allowed[m] and speeds[m] * dt >= gap + GAP_TOLERANCE and not still
-    if not use.any():
+    use = (_closes(end_a, end_b, pose_a, pose_b, speeds[0], True, dt, gap),
+           _closes(pose_a, end_b, pose_a, pose_b, speeds[1], may_halt_a, dt, gap),
+           _closes(end_a, pose_b, pose_a, pose_b, speeds[2], may_halt_b, dt, gap))
+    if not (use[0] or use[1] or use[2]):
         return False
     for i in range(len(fa) - 1):
         for j in range(len(fb) - 1):

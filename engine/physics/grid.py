@@ -348,44 +348,72 @@ def _swept_pairs(boxes: np.ndarray, active: np.ndarray) -> np.ndarray:
 
 @kernel
 def _hashed_pairs(boxes: np.ndarray, active: np.ndarray, cell: float) -> np.ndarray:
-    """`box_pairs` through a uniform grid of `cell`-sized cells, none smaller than a box: each box
-    is filed under the (at most four) cells it touches, and a pair is taken in the one cell that
-    holds the lower-left corner of the two boxes' overlap, so once."""
+    """`box_pairs` through a uniform grid of cells a little larger than the largest box: each box is
+    filed once, under the cell of its lower-left corner, so two boxes that overlap are filed in the
+    same cell or in neighbouring ones; each cell is paired with itself and with four of its
+    neighbours (right, above left, above, above right), so each two cells once."""
     x0, y0 = boxes[:, 0].min(), boxes[:, 1].min()
     width, height = boxes[:, 2].max() - x0, boxes[:, 3].max() - y0
+    cell *= 1.0 + 1e-6  # larger than any box, however the cell indices round
     while (width / cell + 1.0) * (height / cell + 1.0) > MAX_GRID:
         cell *= 2.0
     inv = 1.0 / cell
     nx, ny = int(width * inv) + 1, int(height * inv) + 1
-    cell_first, cell_items, large = _file(boxes, x0, y0, inv, nx, ny)
-    if len(large):  # cannot happen (no box is larger than a cell); were it to, the sweep still answers
-        return _swept_pairs(boxes, active)
+    counts = np.zeros(nx * ny + 1, dtype=np.int64)
+    corner = np.empty(len(boxes), dtype=np.int64)
+    _corner_cells(boxes, x0, y0, inv, nx, ny, corner, counts)
+    cell_first = np.cumsum(counts)
+    cell_items = np.empty(len(boxes), dtype=np.int64)
+    _file_by_corner(corner, cell_first[:-1].copy(), cell_items)
     pairs = np.empty((max(16, 4 * len(boxes)), 2), dtype=np.int64)
-    count = _cell_pairs(boxes, active, x0, y0, inv, nx, ny, cell_first, cell_items, pairs)
+    count = _neighbour_pairs(boxes, active, nx, ny, cell_first, cell_items, pairs)
     while count < 0:  # more pairs than room: again with twice the room
         pairs = np.empty((2 * len(pairs), 2), dtype=np.int64)
-        count = _cell_pairs(boxes, active, x0, y0, inv, nx, ny, cell_first, cell_items, pairs)
+        count = _neighbour_pairs(boxes, active, nx, ny, cell_first, cell_items, pairs)
     return _sorted_pairs(pairs, count, len(boxes))
 
 
 @leaf_kernel
-def _cell_pairs(boxes: np.ndarray, active: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int,
-                cell_first: np.ndarray, cell_items: np.ndarray, pairs: np.ndarray) -> int:
-    """`_hashed_pairs`' search, cell by cell, into `pairs`; how many, or -1 if they do not fit."""
+def _corner_cells(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny: int, corner: np.ndarray,
+                  counts: np.ndarray) -> None:
+    """Each box's cell (that of its lower-left corner) into `corner`, and how many each cell holds
+    into counts[cell + 1]."""
+    for i in range(len(boxes)):
+        c = _cell(boxes[i, 1], y0, inv, ny) * nx + _cell(boxes[i, 0], x0, inv, nx)
+        corner[i] = c
+        counts[c + 1] += 1
+
+
+@leaf_kernel
+def _file_by_corner(corner: np.ndarray, fill: np.ndarray, items: np.ndarray) -> None:
+    """Each box, in ascending order, into the rows of its cell (fill: each cell's next row)."""
+    for i in range(len(corner)):
+        items[fill[corner[i]]] = i
+        fill[corner[i]] += 1
+
+
+@leaf_kernel
+def _neighbour_pairs(boxes: np.ndarray, active: np.ndarray, nx: int, ny: int, cell_first: np.ndarray,
+                     cell_items: np.ndarray, pairs: np.ndarray) -> int:
+    """`_hashed_pairs`' search into `pairs` (each (smaller, larger) index, unsorted); how many, or -1
+    if they do not fit."""
     count = 0
     for c in range(nx * ny):
+        cx, cy = c % nx, c // nx
         for a in range(cell_first[c], cell_first[c + 1]):
             i = cell_items[a]
-            for b in range(a + 1, cell_first[c + 1]):
-                j = cell_items[b]
-                if not (active[i] or active[j]) or not rows_overlap(boxes, i, j):
+            for n in range(5):  # the cell itself (the boxes after this one), then four neighbours
+                dx, dy = (0, 1, -1, 0, 1)[n], (0, 0, 1, 1, 1)[n]
+                if not (0 <= cx + dx < nx and cy + dy < ny):
                     continue
-                corner_x, corner_y = max(boxes[i, 0], boxes[j, 0]), max(boxes[i, 1], boxes[j, 1])
-                if _cell(corner_y, y0, inv, ny) * nx + _cell(corner_x, x0, inv, nx) == c:
-                    if count == len(pairs):
-                        return -1
-                    pairs[count, 0], pairs[count, 1] = min(i, j), max(i, j)
-                    count += 1
+                other = c + dy * nx + dx
+                for b in range(a + 1 if n == 0 else cell_first[other], cell_first[other + 1]):
+                    j = cell_items[b]
+                    if (active[i] or active[j]) and rows_overlap(boxes, i, j):
+                        if count == len(pairs):
+                            return -1
+                        pairs[count, 0], pairs[count, 1] = min(i, j), max(i, j)
+                        count += 1
     return count
 
 

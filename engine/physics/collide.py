@@ -274,6 +274,20 @@ def _circle_beyond(wv: np.ndarray, wn: np.ndarray, s: int, e: int, x: float, y: 
     return farthest > reach
 
 
+@leaf_kernel
+def _any_close(wv: np.ndarray, wn: np.ndarray, wall_first: np.ndarray, which: np.ndarray, radius: np.ndarray,
+               states: np.ndarray, near_first: np.ndarray, near: np.ndarray, margin: float) -> bool:
+    """Whether any body of `bodies_wall_contacts` has a wall piece near it that its bounding circle
+    does not stay more than `margin` clear of."""
+    for q in range(len(which)):
+        beyond = radius[which[q]] + margin + _CIRCLE_SLACK
+        for n in range(near_first[q], near_first[q + 1]):
+            g = near[n]
+            if not _circle_beyond(wv, wn, wall_first[g], wall_first[g + 1], states[q, 0], states[q, 1], beyond):
+                return True
+    return False
+
+
 @kernel
 def bodies_wall_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray,
                          body_first: np.ndarray, which: np.ndarray, radius: np.ndarray, states: np.ndarray,
@@ -287,7 +301,10 @@ def bodies_wall_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reac
 
     A wall piece its bounding circle stays more than `margin` clear of is passed over without
     posing the body, and then one its pieces are `pieces_apart` from: `collide_convex` would stop
-    at those separating axes with no row, so the rows are the same."""
+    at those separating axes with no row, so the rows are the same. (Nothing else is made while
+    no body comes that close: a ball near a wall but clear of it is most of its substeps there.)"""
+    if not _any_close(walls[0], walls[1], walls[2], which, radius, states, near_first, near, margin):
+        return np.empty((0, ROW))
     rows = 0
     for q in range(len(which)):
         pieces = body_first[which[q] + 1] - body_first[which[q]]

@@ -461,10 +461,12 @@ def find_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.n
     substep can be pushed into a wall it is not moving towards yet, so its wall gaps must stay
     contacts. A contact with a gap acts only if the bodies, moving on as they are, would close it
     within the substep (`collide.wall_contacts`, `toi.pairs_apart`)."""
+    # Empty arrays are made once and shared where nothing is to be made (numba counts each one it
+    # makes, however small): without pairs, the candidates' own empty pairs stand for them.
     n = len(store_rows)
     pressed = np.zeros(n, dtype=np.bool_)
-    pairs = np.zeros((0, 2), dtype=np.int64)
-    pair_rows, pair_first, gaps = np.zeros((0, ROW)), np.zeros(1, dtype=np.int64), np.zeros(0)
+    no_rows, zero_first = np.empty((0, ROW)), np.zeros(1, dtype=np.int64)
+    pairs, pair_rows, pair_first, gaps = pair_ents, no_rows, zero_first, np.empty(0)
     if len(pair_ents):
         shapes = np.empty((len(pair_ents), 2), dtype=np.int64)
         for g in range(len(pair_ents)):
@@ -481,30 +483,27 @@ def find_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.n
                     apart, pressed)
 
     # The contact rows against walls (body by body), then between bodies (pair by pair).
-    wall_rows, near_rows, near_materials = np.zeros((0, ROW)), np.zeros(0, dtype=np.int64), np.zeros((0, 2))
+    wall_rows, near = no_rows, near_found[:0]
     if len(near_ents):
         near = lookup[near_ents]
-        near_rows = store_rows[near]
-        near_materials = materials[near]
         held = pressed[near]
         moving = np.empty((len(near), 6))
         for q in range(len(near)):
             for c in range(6):
-                moving[q, c] = state[near_rows[q], B_X + c]
+                moving[q, c] = state[store_rows[near[q]], B_X + c]
         wall_rows = bodies_wall_contacts(lv, ln, first, reach, body_first, near, radius, moving, held, near_first,
                                          near_found, walls, dt, margin)
-    kept_rows, kept_first = np.zeros((0, ROW)), np.zeros(1, dtype=np.int64)
-    kept_ents, kept_bodies, kept_materials = np.zeros((0, 2), dtype=np.int64), np.zeros((0, 2), dtype=np.int64), \
-        np.zeros((0, 4))
+    kept_rows, kept_first, kept_ents, kept_bodies, kept_materials = no_rows, zero_first, pairs, pairs, \
+        np.empty((0, 4))
     if len(pairs):  # as for walls: bodies that will not meet do not touch
         kept_rows, kept_first, kept_ents, kept_bodies, kept_materials = kept_pairs(
             pair_rows, pair_first, pairs, apart, ents, store_rows, materials)
         if len(kept_ents):
             wake_pairs(state, kept_bodies)
     if not len(wall_rows) and not len(kept_ents):
-        return (np.zeros((0, 2), dtype=np.int64), np.zeros((0, 2), dtype=np.int64), np.zeros((0, MANIFOLD_COLUMNS)),
-                np.zeros(1, dtype=np.int64), np.zeros((0, POINT_COLUMNS)), np.zeros((0, KEY_COLUMNS), dtype=np.int64),
-                deepest)
+        return (kept_ents, kept_ents, np.zeros((0, MANIFOLD_COLUMNS)), zero_first, np.zeros((0, POINT_COLUMNS)),
+                np.zeros((0, KEY_COLUMNS), dtype=np.int64), deepest)
+    near_rows, near_materials = store_rows[near], materials[near]
     table = build_contacts(wall_rows, near_ents, near_rows, near_materials, wall_materials, wall_owner, wall_index,
                            kept_rows, kept_first, kept_ents, kept_bodies, kept_materials, state, static, ngs, deepest)
     if warm and len(old_ents):

@@ -62,22 +62,6 @@ def max_separation(v1: np.ndarray, n1: np.ndarray, s1: int, e1: int, v2: np.ndar
 
 
 @leaf_kernel
-def pieces_apart(va: np.ndarray, na: np.ndarray, fa: np.ndarray, a0: int, a1: int, vb: np.ndarray, nb: np.ndarray,
-                 fb: np.ndarray, b0: int, b1: int, margin: float) -> bool:
-    """Whether every piece a0..a1 of set A (rows fa[i]..fa[i + 1] of va, na) lies more than `margin`
-    from every piece b0..b1 of set B along a face of one of the two: the separating axes
-    `collide_convex` tries first, so it would make no row for any of those pairs. (Loops and leaf
-    calls only, for callers in hot loops; see `jit`.)"""
-    apart = True
-    for i in range(a0, a1):
-        for j in range(b0, b1):
-            gap_a, _ = max_separation(va, na, fa[i], fa[i + 1], vb, fb[j], fb[j + 1], NO_SEAMS, -1)
-            gap_b, _ = max_separation(vb, nb, fb[j], fb[j + 1], va, fa[i], fa[i + 1], NO_SEAMS, -1)
-            apart &= (gap_a > margin) | (gap_b > margin)
-    return apart
-
-
-@leaf_kernel
 def _incident_edge(normals: np.ndarray, s: int, e: int, nx: float, ny: float, skip: np.ndarray,
                    skip_start: int) -> int:
     """The face most opposed to the reference normal (a wall's internal edges face nothing)."""
@@ -300,9 +284,9 @@ def bodies_wall_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reac
     column BODY.
 
     A wall piece its bounding circle stays more than `margin` clear of is passed over without
-    posing the body, and then one its pieces are `pieces_apart` from: `collide_convex` would stop
-    at those separating axes with no row, so the rows are the same. (Nothing else is made while
-    no body comes that close: a ball near a wall but clear of it is most of its substeps there.)"""
+    posing the body (`collide_convex` would find a separating axis and make no row, so the rows are
+    the same), and nothing is made while no body comes that close: a ball near a wall but clear of
+    it is most of its substeps there."""
     if not _any_close(walls[0], walls[1], walls[2], which, radius, states, near_first, near, margin):
         return np.empty((0, ROW))
     rows = 0
@@ -310,14 +294,27 @@ def bodies_wall_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reac
         pieces = body_first[which[q] + 1] - body_first[which[q]]
         rows += 2 * pieces * (near_first[q + 1] - near_first[q])
     out = np.empty((rows, ROW))
-    kept = 0
     # Each body is posed into its own rows of one table-sized array: nothing is allocated a body.
     verts, normals = np.empty((len(lv), 2)), np.empty((len(lv), 2))
     work, clip = toi_work(max(widest(first), widest(walls[2]))), np.empty((3, 3))
-    wv, wn, wf = walls[0], walls[1], walls[2]
     close = np.empty(len(near), dtype=np.int64)
+    kept = _wall_rows(lv, ln, first, reach, body_first, which, radius, states, pressed, near_first, near, walls, dt,
+                      margin, out, verts, normals, work, clip, close)
+    return out[:kept]
+
+
+@leaf_kernel
+def _wall_rows(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
+               which: np.ndarray, radius: np.ndarray, states: np.ndarray, pressed: np.ndarray, near_first: np.ndarray,
+               near: np.ndarray, walls: tuple, dt: float, margin: float, out: np.ndarray, verts: np.ndarray,
+               normals: np.ndarray, work: tuple, clip: np.ndarray, close: np.ndarray) -> int:
+    """`bodies_wall_contacts`' work, into `out`; how many rows. (A leaf: the views it takes of a
+    body's rows cost nothing, so each close wall piece goes to `wall_contacts` as it is, whose
+    separating axes answer first for a piece the body is clear of.)"""
+    kept = 0
+    wv, wn, wf = walls[0], walls[1], walls[2]
     for q in range(len(which)):
-        x, y, angle, vx, vy, spin = states[q]
+        x, y, angle = states[q, 0], states[q, 1], states[q, 2]
         beyond = radius[which[q]] + margin + _CIRCLE_SLACK
         count = 0
         for n in range(near_first[q], near_first[q + 1]):
@@ -330,20 +327,13 @@ def bodies_wall_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reac
         p0, p1 = body_first[which[q]], body_first[which[q] + 1]
         v0, v1 = first[p0], first[p1]
         pose_piece(lv, ln, v0, v1, x, y, angle, verts[v0:v1], normals[v0:v1])
-        touching = 0
-        for c in range(count):
-            g = close[c]
-            if not pieces_apart(verts, normals, first, p0, p1, wv, wn, wf, g, g + 1, margin):
-                close[touching] = g
-                touching += 1
-        if touching == 0:
-            continue
-        made = wall_contacts(verts, normals, lv, ln, first[p0:p1 + 1], reach[p0:p1], x, y, angle, vx, vy, spin, dt,
-                             pressed[q], walls, close[:touching], margin, out[kept:], clip, work)
+        made = wall_contacts(verts, normals, lv, ln, first[p0:p1 + 1], reach[p0:p1], x, y, angle, states[q, 3],
+                             states[q, 4], states[q, 5], dt, pressed[q], walls, close[:count], margin, out[kept:],
+                             clip, work)
         for k in range(kept, kept + made):
             out[k, BODY] = q
         kept += made
-    return out[:kept]
+    return kept
 
 
 @kernel
@@ -368,6 +358,19 @@ def bodies_pair_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body
     posed = np.zeros(len(body_first) - 1, dtype=np.bool_)
     every = np.arange(len(first))  # B's pieces, all of them: every[:count]
     clip = np.empty((3, 3))
+    rows, t = _pair_rows(first, body_first, pairs, poses, radius, margin, lv, ln, out, pair_first, touching, gaps,
+                         posed_v, posed_n, posed, every, clip)
+    return out[:rows], pair_first[:t + 1].copy(), touching[:t].copy(), gaps[:t].copy()
+
+
+@leaf_kernel
+def _pair_rows(first: np.ndarray, body_first: np.ndarray, pairs: np.ndarray, poses: np.ndarray, radius: np.ndarray,
+               margin: float, lv: np.ndarray, ln: np.ndarray, out: np.ndarray, pair_first: np.ndarray,
+               touching: np.ndarray, gaps: np.ndarray, posed_v: np.ndarray, posed_n: np.ndarray, posed: np.ndarray,
+               every: np.ndarray, clip: np.ndarray) -> tuple[int, int]:
+    """`bodies_pair_contacts`' work into its arrays; how many rows and how many pairs have some. (A
+    leaf: the views it takes cost nothing, so each pair within reach goes to `collide_sets`, whose
+    separating axes answer first for pieces that are apart.)"""
     rows = t = 0
     for g in range(len(pairs)):
         a, b = pairs[g, 0], pairs[g, 1]
@@ -381,10 +384,6 @@ def bodies_pair_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body
                 pose_piece(lv, ln, v0, v1, poses[q, 0], poses[q, 1], poses[q, 2], posed_v[v0:v1], posed_n[v0:v1])
                 posed[q] = True
         a0, a1, b0, b1 = body_first[a], body_first[a + 1], body_first[b], body_first[b + 1]
-        # Most pairs a broadphase finds do not touch: say so without the call (whose arrays numba
-        # counts references to).
-        if pieces_apart(posed_v, posed_n, first, a0, a1, posed_v, posed_n, first, b0, b1, margin):
-            continue
         made = collide_sets(posed_v, posed_n, first[a0:a1 + 1], posed_v, posed_n, first[b0:b1 + 1], every[:b1 - b0],
                             NO_SEAMS, NO_SEAMS, False, margin, False, out[rows:], clip)
         if made == 0:
@@ -398,7 +397,7 @@ def bodies_pair_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body
         rows += made
         t += 1
         pair_first[t] = rows
-    return out[:rows], pair_first[:t + 1].copy(), touching[:t].copy(), gaps[:t].copy()
+    return rows, t
 
 
 @kernel

@@ -7,7 +7,7 @@ from polygolf.engine.physics.body import ANGLE, ANGLE0, INV_MASS, X0, Y0, X, Y
 from polygolf.engine.physics.collide import max_separation
 from polygolf.engine.physics.geometry import pose_piece
 from polygolf.engine.physics.grid import body_pairs, overlapping
-from polygolf.engine.physics.jit import inlined_kernel, kernel
+from polygolf.engine.physics.jit import inlined_kernel, kernel, leaf_kernel
 from polygolf.engine.physics.motion import rewind
 from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP, TOI_TARGET
 from polygolf.engine.physics.toi import body_pair_hits, first_wall_hits, toi_work
@@ -60,17 +60,30 @@ class CCDProcessor(esper.Processor):
 @inlined_kernel
 def sweep(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple) -> int:
     """The stage on a store's state (`Shapes.packed`, `StaticWorld.packed`, `FatBoxes.of`); returns
-    how many bodies went back."""
+    how many bodies went back. (It takes nothing out of the tuples itself: numba would count a
+    reference to each array taken out, every substep; the leaves it calls do it for nothing.)"""
+    moved, count = _sweep_walls(state, shapes, walls, fat_boxes, inputs)
+    if moved and inputs[5]:  # bodies that stepped, and several of them
+        count += _body_hits(state, shapes, walls, inputs)
+    return _rewind_hits(state, shapes, inputs) if count else 0
+
+
+@leaf_kernel
+def _sweep_walls(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple) -> tuple[bool, int]:
+    """Every body against the walls its motion sweeps (`toi.first_wall_hits`)."""
     lv, ln, first, reach, body_first, rows, radius, _, _, _, _ = shapes
     (wv, wn, wfirst, _, _), _, _, _, _, grid = walls
-    seen, found, hits, work, boxes, several, _ = inputs
+    seen, found, hits, work, boxes, _, _ = inputs
     # No pair can need sweeping while no body steps half the linear slop.
-    moved, count = first_wall_hits(lv, ln, first, reach, body_first, state, rows, radius, LINEAR_SLOP, grid,
-                                   fat_boxes, seen, found, wv, wn, wfirst, TOI_TARGET, 0.25 * LINEAR_SLOP,
-                                   LINEAR_SLOP, 0.5 * LINEAR_SLOP, hits, work, boxes)
-    if several and moved:
-        count += _body_hits(state, shapes, walls, inputs)
-    return rewind(state, rows, hits) if count else 0
+    return first_wall_hits(lv, ln, first, reach, body_first, state, rows, radius, LINEAR_SLOP, grid, fat_boxes, seen,
+                           found, wv, wn, wfirst, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP, 0.5 * LINEAR_SLOP, hits,
+                           work, boxes)
+
+
+@leaf_kernel
+def _rewind_hits(state: np.ndarray, shapes: tuple, inputs: tuple) -> int:
+    """Each body back to its time of impact (`motion.rewind`)."""
+    return rewind(state, shapes[5], inputs[2])
 
 
 @kernel

@@ -24,7 +24,7 @@ from contextlib import contextmanager
 from typing import TextIO
 
 QUIET_FOR = 0.3  # s of compiling before the line shows: a moment's wait needs no explanation
-SECONDS_PER_STEP = 12.5  # a rough first-launch compile of one warm-up group on 2 cores (8 groups: 98 s)
+SECONDS_PER_STEP = 7.5  # a rough first-launch compile of one warm-up group on 2 cores (9 groups, a helper: 64 s)
 LEAD = "Compiling the physics engine (first launch only)"
 
 

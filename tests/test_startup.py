@@ -174,6 +174,95 @@ def test_first_launch_compiles_with_one_line_on_stderr_and_the_next_loads_silent
     assert again.returncode == 0 and again.stdout == "" and again.stderr == "", again.stderr
 
 
+# A child process that runs two warm-ups (and a made-up one) through `jit.helped` with a helper for
+# the second, and prints, step by step, how many kernels numba compiled (not loaded) in it.
+HELPED_CHILD = """
+import json, sys
+from numba.core import event
+from polygolf.engine.physics import jit
+compiles = []
+class Count(event.Listener):
+    def on_start(self, _event): compiles[-1] += 1
+    def on_end(self, _event): pass
+named = dict(jit.kernel_steps())
+steps = [("shapes", named["shapes"]), ("motion", named["motion"]), ("made up", lambda: None)]
+with event.install_listener("numba:compile", Count()), jit.helped(steps, json.loads(sys.argv[1])) as helped:
+    for label, fn in helped:
+        compiles.append(0)
+        fn()
+print(json.dumps(compiles))
+"""
+
+
+def _helped_child(tmp_path: Path, helpers: list) -> tuple[list[int], list[Path]]:
+    """Run HELPED_CHILD with a cold cache: compiles per step, and what it left in its temporary folder."""
+    temp = tmp_path / "temp"
+    temp.mkdir(exist_ok=True)
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "numba"), TMPDIR=str(temp))
+    env.pop("NUMBA_DISABLE_JIT", None)
+    out = subprocess.run([sys.executable, "-c", HELPED_CHILD, json.dumps(helpers)], capture_output=True, text=True,
+                         env=env, timeout=120)
+    assert out.returncode == 0, out.stderr
+    return json.loads(out.stdout), list(temp.iterdir())
+
+
+@pytest.mark.skipif(not jit.COMPILED, reason="nothing compiles without numba")
+def test_a_first_launch_shares_the_compile_with_a_helper_and_loads_what_it_made(tmp_path):
+    """A cold cache on a machine with two cores: the helper compiles the second group while this
+    process compiles the first; this process then loads it (no compile of its own), and the next
+    launch loads everything without a helper. A group the helper does not know (it fails) is run
+    here as if there were no helper. The helpers' folders are gone afterwards."""
+    if len(os.sched_getaffinity(0)) < 2:
+        pytest.skip("one core: no helper")
+    compiles, left = _helped_child(tmp_path, [["shapes", ["motion", "made up"]]])
+    assert compiles[0] > 0 and compiles[1] == 0 and compiles[2] == 0, compiles
+    assert left == []
+    again, _ = _helped_child(tmp_path, [["shapes", ["motion"]]])
+    assert again == [0, 0, 0]
+
+
+def test_a_helper_starts_only_on_a_first_launch_and_the_steps_keep_their_order(tmp_path, monkeypatch):
+    """A cache that holds kernels already, one core, or no group to give away (none of the steps,
+    or one before the step the helper would start with): the steps run as they are, no process
+    started. Else the helper starts with its step, and its group's step waits for it first."""
+    ran, made, waited, closed = [], [], [], []
+
+    class Helper:
+        def __init__(self, labels: list[str], cache: Path) -> None:
+            made.append(labels)
+            self.labels = labels
+
+        def wait_for(self, label: str) -> None:
+            waited.append((label, ran[:]))
+
+        def close(self) -> None:
+            closed.append(True)
+
+    steps = [(label, lambda label=label: ran.append(label)) for label in ("a", "b", "c")]
+    monkeypatch.setattr(jit, "_Helper", Helper)
+    monkeypatch.setattr(jit, "CACHE", tmp_path)
+    monkeypatch.setattr(jit, "_spare_cores", lambda: True)
+    kept = tmp_path / "physics_0" / "grid.overlaps-1.py311.nbi"
+    kept.parent.mkdir()
+    kept.write_bytes(b"")
+    with jit.helped(steps, [("a", ["b"])]) as helped:
+        assert helped == steps  # not a first launch
+    kept.unlink()
+    for helpers in ([("b", ["a"])], [("a", ["x"])], [("x", ["b"])]):
+        with jit.helped(steps, helpers) as helped:
+            assert helped == steps, helpers
+    monkeypatch.setattr(jit, "_spare_cores", lambda: False)
+    with jit.helped(steps, [("a", ["b"])]) as helped:
+        assert helped == steps
+    assert made == []
+    monkeypatch.setattr(jit, "_spare_cores", lambda: True)
+    with jit.helped(steps, [("a", ["b", "x"])]) as helped:
+        assert [label for label, _ in helped] == ["a", "b", "c"]
+        for _, fn in helped:
+            fn()
+    assert ran == ["a", "b", "c"] and made == [["b"]] and waited == [("b", ["a"])] and closed == [True]
+
+
 def test_compiled_kernels_are_kept_per_version_of_the_engine_sources(tmp_path):
     """A kernel holds the code of the kernels it calls, from other files too, which numba's own
     check (each kernel against its own file) misses: the cache folder is named by a digest of every

@@ -25,17 +25,23 @@ per piece and per point. numba refuses to compile a leaf that makes an array.
 
 Each kernel module registers a *warm-up*: a call with small, typical arguments that makes numba
 compile (or load from the cache) every kernel it defines with the argument types the engine uses.
-`compile_kernels` runs them all, reporting progress, before a window or a long command starts.
+`compile_kernels` runs them all, reporting progress, before a window or a long command starts. On a
+first launch with a core to spare, a helper process compiles some of them meanwhile (`helped`).
 """
 
 from __future__ import annotations
 
 import gc
+import glob
 import hashlib
 import os
 import shutil
+import subprocess
+import sys
+import tempfile
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
 from pathlib import Path
 from typing import TypeVar
 
@@ -85,10 +91,12 @@ def cache_folder(base: Path, fingerprint: str) -> Path:
     return folder
 
 
+CACHE: Path | None = None  # the folder this process's kernels are cached in (None: numba's own places)
 if COMPILED:
     _base = os.environ.get("NUMBA_CACHE_DIR") or user_cache_path("polygolf", appauthor=False) / "kernels"
     try:
-        numba.config.CACHE_DIR = str(cache_folder(Path(_base), engine_fingerprint()))
+        CACHE = cache_folder(Path(_base), engine_fingerprint())
+        numba.config.CACHE_DIR = str(CACHE)
     except OSError:  # no writable cache folder: numba's own places (beside the code, or its user cache)
         pass
 
@@ -159,12 +167,12 @@ def kernel_steps() -> list[tuple[str, Callable[[], None]]]:
 def compile_kernels(progress: Callable[[int, int, str], None] | None = None) -> float:
     """Compile (or load from the cache) every kernel; `progress(done, total, label)` is called before
     each group and once at the end. Returns the seconds it took."""
-    steps = kernel_steps()
     start = time.perf_counter()
-    for done, (label, fn) in enumerate(steps):
-        if progress is not None:
-            progress(done, len(steps), label)
-        fn()
+    with helped(kernel_steps()) as steps:
+        for done, (label, fn) in enumerate(steps):
+            if progress is not None:
+                progress(done, len(steps), label)
+            fn()
     settle()
     if progress is not None:
         progress(len(steps), len(steps), "ready")
@@ -178,3 +186,123 @@ def settle() -> None:
     in play, a third of a fan of shots' time."""
     gc.collect()
     gc.freeze()
+
+
+# On a first launch, helper processes compile some warm-up groups while this process compiles the
+# others: (the step of this process a helper starts with, the groups it compiles in order). The
+# kernels call each other (the grid, time of impact, contacts, the contact table, the solver, in that
+# order; every stage needs them all): the first helper takes the second half of that chain while
+# this process compiles the first; the second compiles each stage alone while this process compiles
+# the run of stages. About as much work on each side.
+HELPERS: tuple[tuple[str, tuple[str, ...]], ...] = (
+    ("shapes", ("contacts", "contact table", "contact solver")),
+    ("compiled stages", ("stages one by one",)),
+)
+
+HELPER_FOLDER = "polygolf-kernels-"  # how the temporary folder a helper compiles into is named
+Step = tuple[str, Callable[[], None]]
+
+
+@contextmanager
+def helped(steps: Sequence[Step], helpers: Sequence[tuple[str, Sequence[str]]] = HELPERS) -> Iterator[list[Step]]:
+    """The warm-up `steps`, to be run in order, sped up on a first launch (nothing in the cache
+    folder yet) on a machine with a core to spare. As this process starts a helper's first step,
+    the helper process starts on its groups, with a copy of the cache as it is then; such a group's
+    step here first waits for the helper to finish it, takes its new kernels into the cache and so
+    loads rather than compiles them. What a helper does not deliver (it failed, or was stopped), this
+    process compiles as it would have anyway.
+
+    A helper compiles into a folder of its own, and only kernels this process has no file for are
+    taken: numba names a kernel's cached versions by how many it had, so two processes writing the
+    same kernel at once could give one version's name to another's code."""
+    labels = [label for label, _ in steps]
+    plan = [(at, [label for label in groups if label in labels]) for at, groups in helpers if at in labels]
+    plan = [(at, groups) for at, groups in plan if groups and labels.index(at) < labels.index(groups[0])]
+    if CACHE is None or not plan or any(CACHE.glob("*/*.nbi")) or not _spare_cores():
+        yield list(steps)
+        return
+    started: list[_Helper] = []
+    try:
+        yield [(label, _helped_step(label, fn, plan, started, CACHE)) for label, fn in steps]
+    finally:
+        for helper in started:
+            helper.close()
+
+
+def _helped_step(label: str, fn: Callable[[], None], plan: list[tuple[str, list[str]]], started: list[_Helper],
+                 cache: Path) -> Callable[[], None]:
+    """Step `label`: start the helpers that start with it, wait for the one compiling it, then run it."""
+    def step() -> None:
+        started.extend(_Helper(groups, cache) for at, groups in plan if at == label)
+        for helper in started:
+            if label in helper.labels:
+                helper.wait_for(label)
+        fn()
+    return step
+
+
+def _spare_cores() -> bool:
+    cores = os.sched_getaffinity(0) if hasattr(os, "sched_getaffinity") else range(os.cpu_count() or 1)
+    return len(cores) > 1
+
+
+class _Helper:
+    """A process compiling warm-up groups (`help_compile`) into a copy of the cache of its own, and
+    the delivery of what it compiled into this process's cache."""
+
+    def __init__(self, labels: Sequence[str], cache: Path) -> None:
+        self.labels, self.cache = list(labels), cache
+        self.folder = Path(tempfile.mkdtemp(prefix=HELPER_FOLDER))
+        self.done: list[str] = []
+        self.proc: subprocess.Popen | None = None
+        code = "import sys; from polygolf.engine.physics.jit import help_compile; help_compile(sys.argv[1:])"
+        try:
+            shutil.copytree(cache, self.folder / cache.name)
+            self.proc = subprocess.Popen([sys.executable, "-c", code, *self.labels], stdin=subprocess.DEVNULL,
+                                         stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
+                                         env=dict(os.environ, NUMBA_CACHE_DIR=str(self.folder)))
+        except OSError:  # no helper: this process compiles its groups too
+            self.proc = None
+
+    def close(self) -> None:
+        if self.proc is not None:
+            self.proc.kill()  # done by now, unless a step of this process failed
+            self.proc.wait()
+            self.proc.stdout.close()
+        shutil.rmtree(self.folder, ignore_errors=True)
+
+    def wait_for(self, label: str) -> None:
+        """Read the helper's lines (a label each, as it finishes a group) up to `label` or its end,
+        then deliver what it has compiled."""
+        while self.proc is not None and label not in self.done:
+            line = self.proc.stdout.readline()
+            if not line:  # it ended, or failed
+                break
+            self.done.append(line.strip())
+        self.deliver()
+
+    def deliver(self) -> None:
+        """Copy into the cache each kernel the helper has cached and this process has not: its
+        versions first, its index (which names them) last, each written whole before it is named."""
+        for index in self.folder.glob("*/*/*.nbi"):
+            mine = self.cache / index.relative_to(self.folder / self.cache.name)
+            if mine.exists():
+                continue
+            mine.parent.mkdir(parents=True, exist_ok=True)
+            for path in [*index.parent.glob(f"{glob.escape(index.stem)}.*.nbc"), index]:
+                part = mine.parent / f".{path.name}.part"
+                shutil.copyfile(path, part)
+                os.replace(part, mine.parent / path.name)
+
+
+def help_compile(labels: Sequence[str]) -> None:
+    """A helper process (`helped`): the warm-up groups `labels` in order, a line on stdout after each."""
+    steps = dict(kernel_steps())
+    try:
+        for label in labels:
+            steps[label]()
+            print(label, flush=True)
+    except BrokenPipeError:  # the process it helped is gone (a window closed mid-compile): nobody takes this
+        folder = Path(os.environ.get("NUMBA_CACHE_DIR", ""))
+        if folder.name.startswith(HELPER_FOLDER):
+            shutil.rmtree(folder, ignore_errors=True)

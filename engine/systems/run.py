@@ -279,18 +279,24 @@ def schedule(res: Resources, processors: list[esper.Processor]) -> list[esper.Pr
     return out
 
 
-@warm_up("compiled stages")
-def _warm() -> None:
-    """A run of every stage, what goes in and out of one, and each stage's kernel alone."""
+def _empty_world() -> tuple:
+    """A world of nothing, in the types the stages take (for the warm-ups)."""
     table = ContactTable.empty().arrays
     candidates = (np.zeros(0, dtype=np.int64), np.zeros(1, dtype=np.int64), np.zeros(0, dtype=np.int64),
                   np.zeros((0, 2), dtype=np.int64))
     shapes = Shapes()
     shapes.current(BodyStore(), [], [])
     walls = StaticWorld.of([], 1.0).packed
-    state, dt, stats = np.zeros((0, len(COLUMNS))), 1.0 / 240.0, np.zeros(4)
-    fat_boxes, found = FatBoxes().of(state, 0), np.zeros(16, dtype=np.int64)
-    held, passed = hold(np.array(sorted(CODES.values()), dtype=np.int64), state, shapes.packed, walls, fat_boxes,
+    state = np.zeros((0, len(COLUMNS)))
+    return table, candidates, shapes.packed, walls, state, 1.0 / 240.0, np.zeros(4), FatBoxes().of(state, 0), \
+        np.zeros(16, dtype=np.int64)
+
+
+@warm_up("compiled stages")
+def _warm() -> None:
+    """A run of every stage, and what goes in and out of one."""
+    table, candidates, shapes, walls, state, dt, stats, fat_boxes, found = _empty_world()
+    held, passed = hold(np.array(sorted(CODES.values()), dtype=np.int64), state, shapes, walls, fat_boxes,
                         IDLE, candidates, table, found)
     put_table(passed, table)
     run_stages(held, 1, dt, stats, np.zeros(5), True)
@@ -298,13 +304,18 @@ def _warm() -> None:
     put_candidates(passed, candidates)
     held_candidates(passed)
     measure_substep(state, stats, np.zeros(5))
-    # Each stage's kernel on its own too, as its processor calls it (a profile, a processor alone).
+
+
+@warm_up("stages one by one")
+def _warm_alone() -> None:
+    """Each stage's kernel on its own, as its processor calls it (a profile, a processor alone)."""
+    table, candidates, shapes, walls, state, dt, stats, fat_boxes, found = _empty_world()
     integrate(state, table[0], IDLE[INTEGRATE], dt)
     push_on_slopes(state, IDLE[SLOPE], dt)
     scale_on_surfaces(state, IDLE[SAND])
-    sweep(state, shapes.packed, walls, fat_boxes, IDLE[CCD])
-    pick(state, shapes.packed, walls, fat_boxes, IDLE[BROADPHASE], found)
-    touch(state, shapes.packed, walls, IDLE[NARROWPHASE], candidates, table, stats, dt)
+    sweep(state, shapes, walls, fat_boxes, IDLE[CCD])
+    pick(state, shapes, walls, fat_boxes, IDLE[BROADPHASE], found)
+    touch(state, shapes, walls, IDLE[NARROWPHASE], candidates, table, stats, dt)
     resolve(state, walls, IDLE[RESOLVE], table, dt)
     hear(table, IDLE[IMPACTS])
     bounce(state, walls, table)

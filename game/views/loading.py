@@ -1,7 +1,7 @@
 """The first screen: the physics engine's compiled kernels made ready, with a bar, before anything
 steps physics.
 
-A first launch compiles them (half a minute, `game.startup`); later launches load them from numba's
+A first launch compiles them (a minute, `game.startup`); later launches load them from numba's
 cache in a fraction of a second and this screen is gone as soon. The warm-up steps run one after the
 other on a thread of their own, started once the screen has been drawn, while the window goes on
 drawing and answering (numba's compiler is Python and LLVM: the window's thread gets the interpreter
@@ -79,12 +79,12 @@ class LoadingView(arcade.View):
 
     def _warm_up(self) -> None:
         """Every step in order, on the warm-up thread."""
-        from polygolf.engine.physics.jit import settle
+        from polygolf.engine.physics.jit import helped, settle
 
         total = len(self.steps)
         try:
-            with watching_compiles(self.console):
-                for label, warm in self.steps:
+            with watching_compiles(self.console), helped(self.steps) as steps:
+                for label, warm in steps:
                     self.console(self.done, total, label)
                     warm()
                     self.done += 1

@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from polygolf.engine.physics.body import ASLEEP, COLUMNS, INV_MASS, SPIN, VX, VY, X0, Y0, X, Y
-from polygolf.engine.physics.jit import kernel, leaf_kernel, warm_up
+from polygolf.engine.physics.jit import inlined_leaf, kernel, leaf_kernel, warm_up
 
 MAX_CELLS = 256  # cells one box may be filed under
 MAX_GRID = 1 << 20  # cells in a grid; a coarser cell is taken beyond it
@@ -25,7 +25,7 @@ FAT_MARGIN = 0.25  # m: a body's walls are looked up for its box grown by this, 
 FAT_KEEP = 32  # walls kept a body; a body with more near it asks the grid every time
 
 
-@leaf_kernel
+@inlined_leaf
 def overlaps(box: np.ndarray, boxes: np.ndarray, i: int) -> bool:
     """Whether `box` and row i of `boxes` overlap (a row by index: taking it as a view of its own
     costs more than the test)."""
@@ -199,7 +199,7 @@ def _no_fat_boxes(bodies: int, keep: int) -> tuple[np.ndarray, np.ndarray]:
     return fat, np.zeros((bodies, 1 + keep), dtype=np.int64)
 
 
-@leaf_kernel
+@inlined_leaf
 def walls_near(fat: np.ndarray, walls: np.ndarray, k: int, box: np.ndarray, boxes: np.ndarray, out: np.ndarray) -> int:
     """The grid's boxes (`boxes`) that `box` of body row k overlaps, ascending, into `out`, picked
     from those kept for its fat box (`FatBoxes`); -1 if `box` is not inside it (`look_up_walls`
@@ -288,7 +288,7 @@ def _fill_near(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, margin: 
     return q, bodies, total, 0
 
 
-@leaf_kernel
+@inlined_leaf
 def _put_near(scratch: np.ndarray, n: int, near: np.ndarray, first: np.ndarray, found: np.ndarray, q: int,
               bodies: int, total: int) -> tuple[int, int, int]:
     """Body q's n boxes (from `scratch`) after the first `total` of `found`; where `bodies_near` goes on."""

@@ -121,6 +121,17 @@ def leaf_kernel(fn: F) -> F:
     return compiled
 
 
+def inlined_leaf(fn: F) -> F:
+    """A leaf numba puts into each kernel that calls it rather than calling it: a small helper called
+    once a body in a loop, where the call (every array passed is some ten machine words) would cost
+    more than its work."""
+    if numba is None:
+        return fn
+    compiled = numba.njit(cache=True, nogil=True, _nrt=False, inline="always")(fn)
+    LEAVES.append(compiled)
+    return compiled
+
+
 def inlined_kernel(fn: F) -> F:
     """A kernel numba inlines where another kernel calls it (a stage's kernel inside a run of
     stages): compiled once as part of its caller rather than once more on its own."""

@@ -28,7 +28,7 @@ from polygolf.engine.physics.body import (
     X,
     Y,
 )
-from polygolf.engine.physics.jit import leaf_kernel, warm_up
+from polygolf.engine.physics.jit import inlined_leaf, leaf_kernel, warm_up
 
 
 @leaf_kernel
@@ -111,7 +111,7 @@ def decay(value: float, rate: float, resistance: float, dt: float) -> float:
     return _decayed(value, rate, resistance, dt, math.exp(-rate * dt) if rate > 0.0 else 1.0)
 
 
-@leaf_kernel
+@inlined_leaf
 def _decayed(value: float, rate: float, resistance: float, dt: float, shrink: float) -> float:
     """`decay` given shrink = exp(-rate·dt) (worked out by the caller, who may have it already)."""
     if rate > 0.0:

@@ -20,7 +20,7 @@ import numpy as np
 from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, COLUMNS, INV_MASS, SPIN, VX, VY, X0, Y0, X, Y
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
 from polygolf.engine.physics.grid import BoxGrid, FatBoxes, look_up_walls, walls_near
-from polygolf.engine.physics.jit import kernel, leaf_kernel, warm_up
+from polygolf.engine.physics.jit import inlined_leaf, kernel, leaf_kernel, warm_up
 from polygolf.engine.physics.settings import GAP_TOLERANCE
 
 MAX_ITERATIONS = 24
@@ -142,7 +142,7 @@ def widest(first: np.ndarray) -> int:
     return most
 
 
-@leaf_kernel
+@inlined_leaf
 def wall_out_of_reach(reach: float, start: np.ndarray, end: np.ndarray, wv: np.ndarray, wn: np.ndarray, ws: int,
                       we: int, target: float, tolerance: float, rates: np.ndarray) -> bool:
     """`time_of_impact`'s quick answer: per unit of t, how fast the piece (bounding radius `reach`

@@ -133,15 +133,16 @@ def test_a_kilometre_wall_and_a_fast_body_stay_cheap():
 
 def test_a_query_s_answer_is_sorted_however_many_it_holds():
     """`_sort_few` (insertion for a few, heapsort past 16, in place: it makes no array) sorts the
-    first `count` values as numpy does and leaves the rest."""
+    values of a range as numpy does and leaves the rest."""
     from polygolf.engine.physics.grid import _sort_few
 
     rng = np.random.default_rng(5)
     for count in (0, 1, 2, 15, 16, 17, 18, 40, 301):
-        values = rng.permutation(1000)[:count + 5].astype(np.int64)
-        expected = np.concatenate([np.sort(values[:count]), values[count:]])
-        _sort_few(values, count)
-        assert np.array_equal(values, expected), count
+        for start in (0, 3):
+            values = rng.permutation(1000)[:count + 8].astype(np.int64)
+            expected = np.concatenate([values[:start], np.sort(values[start:start + count]), values[start + count:]])
+            _sort_few(values, start, start + count)
+            assert np.array_equal(values, expected), (count, start)
 
 
 def test_a_crowd_with_more_pairs_than_first_room_for_still_pairs_every_two():

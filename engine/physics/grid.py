@@ -32,7 +32,7 @@ def overlaps(box: np.ndarray, boxes: np.ndarray, i: int) -> bool:
     return (box[0] <= boxes[i, 2]) & (boxes[i, 0] <= box[2]) & (box[1] <= boxes[i, 3]) & (boxes[i, 1] <= box[3])
 
 
-@leaf_kernel
+@inlined_leaf
 def rows_overlap(boxes: np.ndarray, i: int, j: int) -> bool:
     return boxes[i, 0] <= boxes[j, 2] and boxes[j, 0] <= boxes[i, 2] and boxes[i, 1] <= boxes[j, 3] \
         and boxes[j, 1] <= boxes[i, 3]
@@ -132,40 +132,41 @@ def overlapping(boxes: np.ndarray, x0: float, y0: float, inv: float, nx: int, ny
     if several:
         for k in range(count):
             seen[out[k]] = False
-    _sort_few(out, count)
+    _sort_few(out, 0, count)
     return count
 
 
 @leaf_kernel
-def _sort_few(values: np.ndarray, count: int) -> None:
-    """values[:count] in ascending order: by insertion while they are few (a query's usual answer,
+def _sort_few(values: np.ndarray, start: int, stop: int) -> None:
+    """values[start:stop] in ascending order: by insertion while they are few (a query's usual answer,
     mostly in order already), else by heapsort (in place: a leaf makes no array)."""
+    count = stop - start
     if count > 16:
         for root in range(count // 2 - 1, -1, -1):
-            _sift_down(values, root, count)
+            _sift_down(values, start, root, count)
         for end in range(count - 1, 0, -1):
-            values[0], values[end] = values[end], values[0]
-            _sift_down(values, 0, end)
+            values[start], values[start + end] = values[start + end], values[start]
+            _sift_down(values, start, 0, end)
         return
-    for a in range(1, count):
+    for a in range(start + 1, stop):
         v = values[a]
         b = a - 1
-        while b >= 0 and values[b] > v:
+        while b >= start and values[b] > v:
             values[b + 1] = values[b]
             b -= 1
         values[b + 1] = v
 
 
 @leaf_kernel
-def _sift_down(values: np.ndarray, root: int, end: int) -> None:
-    """Heapsort's step: values[root] down the max-heap values[:end] to its place."""
+def _sift_down(values: np.ndarray, start: int, root: int, end: int) -> None:
+    """Heapsort's step: values[start + root] down the max-heap values[start:start + end] to its place."""
     while 2 * root + 1 < end:
         child = 2 * root + 1
-        if child + 1 < end and values[child] < values[child + 1]:
+        if child + 1 < end and values[start + child] < values[start + child + 1]:
             child += 1
-        if values[root] >= values[child]:
+        if values[start + root] >= values[start + child]:
             return
-        values[root], values[child] = values[child], values[root]
+        values[start + root], values[start + child] = values[start + child], values[start + root]
         root = child
 
 
@@ -314,9 +315,32 @@ def _add_pair(pairs: np.ndarray, count: int, i: int, j: int) -> np.ndarray:
 
 @kernel
 def _sorted_pairs(pairs: np.ndarray, count: int, n: int) -> np.ndarray:
-    """The first `count` pairs of indices below n, sorted (by their keys i·(n + 1) + j, one per pair:
-    a sort of numbers, no permutation to apply)."""
-    return _decoded(np.sort(pairs[:count, 0] * (n + 1) + pairs[:count, 1]), n + 1)
+    """The first `count` pairs (i, j) of indices below n, each once, sorted: counted out by i, then
+    each i's few j sorted (`_sort_few`), rather than a sort of all of them."""
+    first = np.zeros(n + 1, dtype=np.int64)
+    seconds, out = np.empty(count, dtype=np.int64), np.empty((count, 2), dtype=np.int64)
+    _count_out(pairs, count, first, seconds, out)
+    return out
+
+
+@leaf_kernel
+def _count_out(pairs: np.ndarray, count: int, first: np.ndarray, seconds: np.ndarray, out: np.ndarray) -> None:
+    """`_sorted_pairs`' work (first: n + 1 zeros; seconds, out: room for the pairs' j and the pairs)."""
+    for g in range(count):
+        first[pairs[g, 0] + 1] += 1
+    for i in range(1, len(first)):
+        first[i] += first[i - 1]
+    for g in range(count):  # each j after those of its i so far; first[i] moves on as it fills
+        i = pairs[g, 0]
+        seconds[first[i]] = pairs[g, 1]
+        first[i] += 1
+    start = 0
+    for i in range(len(first) - 1):  # first[i] is now where i's pairs end
+        stop = first[i]
+        _sort_few(seconds, start, stop)
+        for g in range(start, stop):
+            out[g, 0], out[g, 1] = i, seconds[g]
+        start = stop
 
 
 @kernel

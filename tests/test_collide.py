@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
@@ -109,3 +111,30 @@ def test_wall_pieces_a_body_stays_clear_of_are_passed_over_with_the_same_rows():
         touched += made > 0
         apart += made == 0
     assert touched > 20 and apart > 20  # both kinds of pose were tried
+
+
+def test_a_length_compared_with_a_bound_is_judged_as_the_exact_one_would_be():
+    """`toi.length_near` takes the cheaper square root of the sum of squares for `math.hypot` only
+    away from the bound its caller compares it with: on either side of the bound, in the band
+    round it, at extremes of size and with no motion, every comparison comes out as the exact one's,
+    and in the band the value is the exact one."""
+    from polygolf.engine.physics.jit import COMPILED
+    from polygolf.engine.physics.toi import length_near
+
+    hypot = np.hypot if COMPILED else math.hypot  # compiled, math.hypot is the C library's (as numpy's)
+    rng = np.random.default_rng(11)
+    cases = []
+    for _ in range(4000):
+        x, y = rng.normal(size=2) * 10.0 ** rng.integers(-160, 150)
+        plus, more = abs(rng.normal()) * rng.integers(0, 2), abs(rng.normal()) * rng.integers(0, 2)
+        exact = hypot(x, y) + plus + more
+        for bound in (exact, np.nextafter(exact, np.inf), np.nextafter(exact, -np.inf), exact * (1 + 1e-9),
+                      exact * (1 - 1e-7), exact * 2.0, 0.0, math.inf):
+            cases.append((x, y, plus, more, bound, exact))
+    cases += [(0.0, 0.0, 0.0, 0.0, 0.0, 0.0), (3.0, 4.0, 0.0, 0.0, 5.0, 5.0), (1e-200, 1e-200, 0.0, 0.0, 1e-200,
+                                                                                   hypot(1e-200, 1e-200))]
+    for x, y, plus, more, bound, exact in cases:
+        quick = length_near(x, y, plus, more, bound)
+        assert (quick < bound) == (exact < bound) and (quick >= bound) == (exact >= bound), (x, y, plus, more, bound)
+        if abs(exact - bound) <= 1e-7 * abs(bound):
+            assert quick == exact

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
-from polygolf.engine.physics.jit import kernel, leaf_kernel, warm_up
+from polygolf.engine.physics.jit import inlined_leaf, kernel, leaf_kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
 from polygolf.engine.physics.settings import GAP_TOLERANCE
 from polygolf.engine.physics.toi import reaches_wall, toi_work, widest
@@ -189,7 +189,7 @@ def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndar
     return made
 
 
-@leaf_kernel
+@inlined_leaf
 def collide_sets(va: np.ndarray, na: np.ndarray, fa: np.ndarray, vb: np.ndarray, nb: np.ndarray, fb: np.ndarray,
                  pieces_b: np.ndarray, internal: np.ndarray, hidden: np.ndarray, seams: bool, margin: float,
                  b_outer: bool, out: np.ndarray, clip: np.ndarray) -> int:

@@ -40,7 +40,7 @@ ROW = 14
 NO_SEAMS = np.zeros(0, dtype=np.bool_)
 
 
-@leaf_kernel
+@inlined_leaf
 def max_separation(v1: np.ndarray, n1: np.ndarray, s1: int, e1: int, v2: np.ndarray, s2: int, e2: int,
                    skip: np.ndarray, skip_start: int) -> tuple[float, int]:
     """Largest separation of polygon 2 (rows s2..e2) from the faces of polygon 1 (rows s1..e1), but
@@ -61,7 +61,7 @@ def max_separation(v1: np.ndarray, n1: np.ndarray, s1: int, e1: int, v2: np.ndar
     return best, best_edge
 
 
-@leaf_kernel
+@inlined_leaf
 def _incident_edge(normals: np.ndarray, s: int, e: int, nx: float, ny: float, skip: np.ndarray,
                    skip_start: int) -> int:
     """The face most opposed to the reference normal (a wall's internal edges face nothing)."""
@@ -73,7 +73,7 @@ def _incident_edge(normals: np.ndarray, s: int, e: int, nx: float, ny: float, sk
     return best
 
 
-@leaf_kernel
+@inlined_leaf
 def _clip(points: np.ndarray, count: int, nx: float, ny: float, offset: float, plane_id: float) -> int:
     """Keep the part of a segment (rows 0, 1 of x, y, feature) where n·p <= offset
     (Sutherland-Hodgman on one plane); returns how many points are left."""

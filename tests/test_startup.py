@@ -210,8 +210,8 @@ def _helped_child(tmp_path: Path, helpers: list) -> tuple[list[int], list[Path]]
 def test_a_first_launch_shares_the_compile_with_a_helper_and_loads_what_it_made(tmp_path):
     """A cold cache on a machine with two cores: the helper compiles the second group while this
     process compiles the first; this process then loads it (no compile of its own), and the next
-    launch loads everything without a helper. A group the helper does not know (it fails) is run
-    here as if there were no helper. The helpers' folders are gone afterwards."""
+    launch compiles nothing. A group the helper does not know (it fails) is run here as if there
+    were no helper. The helpers' folders are gone afterwards."""
     if len(os.sched_getaffinity(0)) < 2:
         pytest.skip("one core: no helper")
     compiles, left = _helped_child(tmp_path, [["shapes", ["motion", "made up"]]])
@@ -222,9 +222,10 @@ def test_a_first_launch_shares_the_compile_with_a_helper_and_loads_what_it_made(
 
 
 def test_a_helper_starts_only_on_a_first_launch_and_the_steps_keep_their_order(tmp_path, monkeypatch):
-    """A cache that holds kernels already, one core, or no group to give away (none of the steps,
-    or one before the step the helper would start with): the steps run as they are, no process
-    started. Else the helper starts with its step, and its group's step waits for it first."""
+    """A cache marked complete, one core, or no group to give away (none of the steps, or one before
+    the step the helper would start with): the steps run as they are, no process started. Else the
+    helper starts with its step, and its group's step waits for it first; the cache is marked
+    complete once every warm-up has run without an error."""
     ran, made, waited, closed = [], [], [], []
 
     class Helper:
@@ -242,12 +243,10 @@ def test_a_helper_starts_only_on_a_first_launch_and_the_steps_keep_their_order(t
     monkeypatch.setattr(jit, "_Helper", Helper)
     monkeypatch.setattr(jit, "CACHE", tmp_path)
     monkeypatch.setattr(jit, "_spare_cores", lambda: True)
-    kept = tmp_path / "physics_0" / "grid.overlaps-1.py311.nbi"
-    kept.parent.mkdir()
-    kept.write_bytes(b"")
+    (tmp_path / jit.COMPLETE).touch()
     with jit.helped(steps, [("a", ["b"])]) as helped:
         assert helped == steps  # not a first launch
-    kept.unlink()
+    (tmp_path / jit.COMPLETE).unlink()
     for helpers in ([("b", ["a"])], [("a", ["x"])], [("x", ["b"])]):
         with jit.helped(steps, helpers) as helped:
             assert helped == steps, helpers
@@ -261,6 +260,16 @@ def test_a_helper_starts_only_on_a_first_launch_and_the_steps_keep_their_order(t
         for _, fn in helped:
             fn()
     assert ran == ["a", "b", "c"] and made == [["b"]] and waited == [("b", ["a"])] and closed == [True]
+    assert not (tmp_path / jit.COMPLETE).exists()  # "a", "b" and "c" are not every warm-up
+    monkeypatch.setattr(jit, "WARM_UPS", steps[:2])
+    with pytest.raises(RuntimeError), jit.helped(steps, [("a", ["b"])]) as helped:
+        helped[0][1]()  # the helper starts
+        raise RuntimeError("a step failed")
+    assert not (tmp_path / jit.COMPLETE).exists() and closed == [True, True]
+    with jit.helped(steps, [("a", ["b"])]) as helped:
+        for _, fn in helped:
+            fn()
+    assert (tmp_path / jit.COMPLETE).exists()  # every warm-up ran: the next launch needs no helper
 
 
 def test_compiled_kernels_are_kept_per_version_of_the_engine_sources(tmp_path):

@@ -41,7 +41,7 @@ import sys
 import tempfile
 import time
 from collections.abc import Callable, Iterator, Sequence
-from contextlib import contextmanager
+from contextlib import contextmanager, suppress
 from pathlib import Path
 from typing import TypeVar
 
@@ -71,8 +71,8 @@ KERNEL_SOURCES = ("physics", "systems", "components")
 
 def engine_fingerprint(root: Path = ENGINE_DIR) -> str:
     """A digest of every source file of the engine's KERNEL_SOURCES folders under `root`, names
-    and contents."""
-    digest = hashlib.sha256()
+    and contents, and of numba's version (a new numba compiles afresh, into a folder of its own)."""
+    digest = hashlib.sha256(numba.__version__.encode() if numba is not None else b"")
     for path in sorted(p for folder in KERNEL_SOURCES for p in (root / folder).rglob("*.py")):
         digest.update(path.relative_to(root).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
     return digest.hexdigest()[:16]
@@ -210,18 +210,20 @@ HELPERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("compiled stages", ("stages one by one",)),
 )
 
+COMPLETE = "complete"  # a file in the cache folder: every warm-up has run there (not a first launch)
 HELPER_FOLDER = "polygolf-kernels-"  # how the temporary folder a helper compiles into is named
 Step = tuple[str, Callable[[], None]]
 
 
 @contextmanager
 def helped(steps: Sequence[Step], helpers: Sequence[tuple[str, Sequence[str]]] = HELPERS) -> Iterator[list[Step]]:
-    """The warm-up `steps`, to be run in order, sped up on a first launch (nothing in the cache
-    folder yet) on a machine with a core to spare. As this process starts a helper's first step,
-    the helper process starts on its groups, with a copy of the cache as it is then; such a group's
-    step here first waits for the helper to finish it, takes its new kernels into the cache and so
-    loads rather than compiles them. What a helper does not deliver (it failed, or was stopped), this
-    process compiles as it would have anyway.
+    """The warm-up `steps`, to be run in order, sped up on a first launch (the cache folder is not
+    marked COMPLETE) on a machine with a core to spare. As this process starts a helper's first
+    step, the helper process starts on its groups, with a copy of the cache as it is then; such a
+    group's step here first waits for the helper to finish it, takes its new kernels into the cache
+    and so loads rather than compiles them. What a helper does not deliver (it failed, or was
+    stopped), this process compiles as it would have anyway. Once every registered warm-up has run
+    without an error, the cache is marked COMPLETE.
 
     A helper compiles into a folder of its own, and only kernels this process has no file for are
     taken: numba names a kernel's cached versions by how many it had, so two processes writing the
@@ -229,15 +231,18 @@ def helped(steps: Sequence[Step], helpers: Sequence[tuple[str, Sequence[str]]] =
     labels = [label for label, _ in steps]
     plan = [(at, [label for label in groups if label in labels]) for at, groups in helpers if at in labels]
     plan = [(at, groups) for at, groups in plan if groups and labels.index(at) < labels.index(groups[0])]
-    if CACHE is None or not plan or any(CACHE.glob("*/*.nbi")) or not _spare_cores():
+    if CACHE is None or not plan or (CACHE / COMPLETE).exists() or not _spare_cores():
         yield list(steps)
-        return
-    started: list[_Helper] = []
-    try:
-        yield [(label, _helped_step(label, fn, plan, started, CACHE)) for label, fn in steps]
-    finally:
-        for helper in started:
-            helper.close()
+    else:
+        started: list[_Helper] = []
+        try:
+            yield [(label, _helped_step(label, fn, plan, started, CACHE)) for label, fn in steps]
+        finally:
+            for helper in started:
+                helper.close()
+    if CACHE is not None and {label for label, _ in WARM_UPS} <= set(labels):
+        with suppress(OSError):  # unmarked, the next launch starts a helper that loads rather than compiles
+            (CACHE / COMPLETE).touch()
 
 
 def _helped_step(label: str, fn: Callable[[], None], plan: list[tuple[str, list[str]]], started: list[_Helper],

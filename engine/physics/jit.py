@@ -268,11 +268,12 @@ class _Helper:
 
     def __init__(self, labels: Sequence[str], cache: Path) -> None:
         self.labels, self.cache = list(labels), cache
-        self.folder = Path(tempfile.mkdtemp(prefix=HELPER_FOLDER))
+        self.folder: Path | None = None
         self.done: list[str] = []
         self.proc: subprocess.Popen | None = None
         code = "import sys; from polygolf.engine.physics.jit import help_compile; help_compile(sys.argv[1:])"
         try:
+            self.folder = Path(tempfile.mkdtemp(prefix=HELPER_FOLDER))
             shutil.copytree(cache, self.folder / cache.name)
             self.proc = subprocess.Popen([sys.executable, "-c", code, *self.labels], stdin=subprocess.DEVNULL,
                                          stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
@@ -285,7 +286,8 @@ class _Helper:
             self.proc.kill()  # done by now, unless a step of this process failed
             self.proc.wait()
             self.proc.stdout.close()
-        shutil.rmtree(self.folder, ignore_errors=True)
+        if self.folder is not None:
+            shutil.rmtree(self.folder, ignore_errors=True)
 
     def wait_for(self, label: str) -> None:
         """Read the helper's lines (a label each, as it finishes a group) up to `label` or its end,
@@ -300,15 +302,20 @@ class _Helper:
     def deliver(self) -> None:
         """Copy into the cache each kernel the helper has cached and this process has not: its
         versions first, its index (which names them) last, each written whole before it is named."""
+        if self.proc is None or self.folder is None:
+            return
         for index in self.folder.glob("*/*/*.nbi"):
             mine = self.cache / index.relative_to(self.folder / self.cache.name)
             if mine.exists():
                 continue
-            mine.parent.mkdir(parents=True, exist_ok=True)
-            for path in [*index.parent.glob(f"{glob.escape(index.stem)}.*.nbc"), index]:
-                part = mine.parent / f".{path.name}.part"
-                shutil.copyfile(path, part)
-                os.replace(part, mine.parent / path.name)
+            try:
+                mine.parent.mkdir(parents=True, exist_ok=True)
+                for path in [*index.parent.glob(f"{glob.escape(index.stem)}.*.nbc"), index]:
+                    part = mine.parent / f".{path.name}.part"
+                    shutil.copyfile(path, part)
+                    os.replace(part, mine.parent / path.name)
+            except OSError:  # (a full disk, say) not delivered: this process compiles it
+                continue
 
 
 def help_compile(labels: Sequence[str]) -> None:

@@ -210,7 +210,9 @@ HELPERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("compiled stages", ("stages one by one",)),
 )
 
-COMPLETE = "complete"  # a file in the cache folder: every warm-up has run there (not a first launch)
+# A file in the cache folder: every warm-up has run there from these sources (numba files a kernel
+# under its source file's place, so another checkout of the same sources compiles afresh).
+COMPLETE = f"complete-{hashlib.sha256(str(ENGINE_DIR).encode()).hexdigest()[:12]}"
 HELPER_FOLDER = "polygolf-kernels-"  # how the temporary folder a helper compiles into is named
 Step = tuple[str, Callable[[], None]]
 

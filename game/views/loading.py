@@ -24,6 +24,7 @@ from polygolf.game.views.navigation import window_key
 from polygolf.game.views.widgets import title
 
 BAR = (560, 22)  # pixels, as the Random nine build's
+LOADING_DRAW_RATE = 1 / 10  # s between frames while the kernels compile
 
 Step = tuple[str, Callable[[], None]]
 
@@ -46,6 +47,7 @@ class LoadingView(arcade.View):
         self.error: BaseException | None = None  # what stopped the warm-up thread, raised on the window's
         self._worker: threading.Thread | None = None
         self.started = time.perf_counter()
+        self._draw_rate = 1 / 60  # the window's, given back when the screen goes
         theme = game.theme
         self.background_color = theme.rgba("background")
         self.title = title("PolyGolf", theme, 48)
@@ -61,6 +63,15 @@ class LoadingView(arcade.View):
     def fraction(self) -> float:
         """How much of the work is done, 0 to 1."""
         return self.done / len(self.steps) if self.steps else 1.0
+
+    def on_show_view(self) -> None:
+        # A bar needs few frames: the core a software renderer (llvmpipe) would spend on 60 goes to
+        # the compile's helper process instead (`jit.helped`).
+        self._draw_rate = getattr(self.window, "_draw_rate", 1 / 60)
+        self.window.set_draw_rate(max(self._draw_rate, LOADING_DRAW_RATE))
+
+    def on_hide_view(self) -> None:
+        self.window.set_draw_rate(self._draw_rate)
 
     def on_update(self, delta_time: float) -> None:
         if self.finished or not self.drawn:

@@ -15,6 +15,7 @@ from __future__ import annotations
 import threading
 import time
 from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING
 
 import arcade
 
@@ -23,10 +24,11 @@ from polygolf.game.startup import ConsoleProgress, first_launch_seconds, watchin
 from polygolf.game.views.navigation import window_key
 from polygolf.game.views.widgets import title
 
+if TYPE_CHECKING:  # (the engine, and numba with it, is imported when the screen starts)
+    from polygolf.engine.physics.jit import Step
+
 BAR = (560, 22)  # pixels, as the Random nine build's
 LOADING_DRAW_RATE = 1 / 10  # s between frames while the kernels compile
-
-Step = tuple[str, Callable[[], None]]
 
 
 class LoadingView(arcade.View):

@@ -115,7 +115,7 @@ def test_wall_pieces_a_body_stays_clear_of_are_passed_over_with_the_same_rows():
 
 def test_a_length_compared_with_a_bound_is_judged_as_the_exact_one_would_be():
     """`toi.length_near` takes the cheaper square root of the sum of squares for `math.hypot` only
-    away from the bound its caller compares it with: on either side of the bound, in the band
+    away from the bounds its caller compares it with: on either side of the bound, in the band
     round it, at extremes of size and with no motion, every comparison comes out as the exact one's,
     and in the band the value is the exact one."""
     from polygolf.engine.physics.jit import COMPILED
@@ -134,7 +134,8 @@ def test_a_length_compared_with_a_bound_is_judged_as_the_exact_one_would_be():
     cases += [(0.0, 0.0, 0.0, 0.0, 0.0, 0.0), (3.0, 4.0, 0.0, 0.0, 5.0, 5.0), (1e-200, 1e-200, 0.0, 0.0, 1e-200,
                                                                                    hypot(1e-200, 1e-200))]
     for x, y, plus, more, bound, exact in cases:
-        quick = length_near(x, y, plus, more, bound)
+        quick = length_near(x, y, plus, more, bound, bound)
+        assert length_near(x, y, plus, more, bound, exact) == exact  # near the second bound: exact too
         assert (quick < bound) == (exact < bound) and (quick >= bound) == (exact >= bound), (x, y, plus, more, bound)
         if abs(exact - bound) <= 1e-7 * abs(bound):
             assert quick == exact

@@ -207,14 +207,16 @@ def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reac
 
 
 @inlined_leaf
-def length_near(x: float, y: float, plus: float, more: float, bound: float) -> float:
-    """hypot(x, y) + plus + more, for a caller that compares it with `bound`: within a millionth of
-    `bound`, exactly that; elsewhere with the square root of the sum of squares in place of
-    `math.hypot`, which is within a few ulps of it (the comparison comes out the same) and costs
-    several times less. (Not where the squares leave the normal range: there the exact one.)"""
+def length_near(x: float, y: float, plus: float, more: float, bound: float, other: float) -> float:
+    """hypot(x, y) + plus + more, for a caller that compares it with `bound` and `other` (the same
+    twice for one bound): within a millionth of either, exactly that; elsewhere with the square root
+    of the sum of squares in place of `math.hypot`, which is within a few ulps of it (the comparisons
+    come out the same) and costs several times less. (Not where the squares leave the normal range:
+    there the exact one.)"""
     squares = x * x + y * y
     value = math.sqrt(squares) + plus + more
-    if abs(value - bound) > 1e-6 * abs(bound) and 1e-290 < squares < math.inf:
+    if (abs(value - bound) > 1e-6 * abs(bound) and abs(value - other) > 1e-6 * abs(other)
+            and 1e-290 < squares < math.inf):
         return value
     return math.hypot(x, y) + plus + more
 
@@ -237,10 +239,8 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
     leaf makes no array); all kept by the caller. Returns whether
     an awake body stepped `far` or more, and how many bodies hit.
 
-    A body's step is its centre's path plus its turn at its bounding radius. The path's length is
-    taken as the square root of the sum of squares, within a hair of the exact `math.hypot` (which
-    costs several times more); within a millionth of `least` or `far`, where that hair could decide,
-    the exact one is taken."""
+    A body's step is its centre's path plus its turn at its bounding radius, compared with `least`
+    and `far` only (`length_near`)."""
     out[:] = 1.0
     moved = False
     hits = 0
@@ -254,9 +254,7 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
             continue
         x0, y0, a0, x1, y1, a1 = state[k, X0], state[k, Y0], state[k, ANGLE0], state[k, X], state[k, Y], state[k, ANGLE]
         dx, dy, turn = x1 - x0, y1 - y0, abs(a1 - a0) * radius[q]
-        travel = math.sqrt(dx * dx + dy * dy) + turn
-        if not (abs(travel - least) > 1e-6 * least and abs(travel - far) > 1e-6 * far):
-            travel = math.hypot(dx, dy) + turn
+        travel = length_near(dx, dy, turn, 0.0, least, far)
         moved |= travel >= far
         if state[k, INV_MASS] == 0.0 or travel < least:
             continue
@@ -336,7 +334,7 @@ def body_pair_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.
         travel = length_near(state[ka, X] - state[ka, X0] - state[kb, X] + state[kb, X0],
                              state[ka, Y] - state[ka, Y0] - state[kb, Y] + state[kb, Y0],
                              abs(state[ka, ANGLE] - state[ka, ANGLE0]) * radius[a],
-                             abs(state[kb, ANGLE] - state[kb, ANGLE0]) * radius[b], limit)
+                             abs(state[kb, ANGLE] - state[kb, ANGLE0]) * radius[b], limit, limit)
         if travel < limit:
             continue
         pa0, pa1, pb0, pb1 = body_first[a], body_first[a + 1], body_first[b], body_first[b + 1]
@@ -409,8 +407,9 @@ def pair_reaches(lva: np.ndarray, lna: np.ndarray, fa: np.ndarray, ra: np.ndarra
     moves_a = (end_a, pose_a, end_a)
     moves_b = (end_b, end_b, pose_b)
     least = (gap + GAP_TOLERANCE) / dt if dt > 0.0 else math.inf  # the speed `_closes` compares with
-    speeds = (length_near(vel_a[0] - vel_b[0], vel_a[1] - vel_b[1], turn_a, turn_b, least),
-              length_near(vel_b[0], vel_b[1], turn_b, 0.0, least), length_near(vel_a[0], vel_a[1], turn_a, 0.0, least))
+    speeds = (length_near(vel_a[0] - vel_b[0], vel_a[1] - vel_b[1], turn_a, turn_b, least, least),
+              length_near(vel_b[0], vel_b[1], turn_b, 0.0, least, least),
+              length_near(vel_a[0], vel_a[1], turn_a, 0.0, least, least))
     use = (_closes(end_a, end_b, pose_a, pose_b, speeds[0], True, dt, gap),
            _closes(pose_a, end_b, pose_a, pose_b, speeds[1], may_halt_a, dt, gap),
            _closes(end_a, pose_b, pose_a, pose_b, speeds[2], may_halt_b, dt, gap))

@@ -195,13 +195,18 @@ print(json.dumps(compiles))
 
 
 def _helped_child(tmp_path: Path, helpers: list) -> tuple[list[int], list[Path]]:
-    """Run HELPED_CHILD with a cold cache: compiles per step, and what it left in its temporary folder."""
-    temp = tmp_path / "temp"
-    temp.mkdir(exist_ok=True)
+    """Run HELPED_CHILD with a cold cache: compiles per step, and what it left in its temporary folder.
+    It runs in a folder holding another `polygolf` (one that fails on import), as from another copy
+    of the game: its helper must still compile this one."""
+    temp, decoy, script = tmp_path / "temp", tmp_path / "elsewhere" / "polygolf", tmp_path / "child" / "helped.py"
+    for folder in (temp, decoy, script.parent):
+        folder.mkdir(parents=True, exist_ok=True)
+    (decoy / "__init__.py").write_text("raise ImportError('another copy of the game')\n")
+    script.write_text(HELPED_CHILD)
     env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "numba"), TMPDIR=str(temp))
     env.pop("NUMBA_DISABLE_JIT", None)
-    out = subprocess.run([sys.executable, "-c", HELPED_CHILD, json.dumps(helpers)], capture_output=True, text=True,
-                         env=env, timeout=120)
+    out = subprocess.run([sys.executable, str(script), json.dumps(helpers)], capture_output=True, text=True,
+                         env=env, cwd=decoy.parent, timeout=120)
     assert out.returncode == 0, out.stderr
     return json.loads(out.stdout), list(temp.iterdir())
 

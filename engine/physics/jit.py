@@ -277,9 +277,14 @@ class _Helper:
         try:
             self.folder = Path(tempfile.mkdtemp(prefix=HELPER_FOLDER))
             shutil.copytree(cache, self.folder / cache.name)
+            # It must compile these very sources: it gets this process's import path, and works in its
+            # own folder (a `-c` process looks first in the folder it starts in, which could hold
+            # another copy of the game).
+            path = os.pathsep.join(entry or os.getcwd() for entry in sys.path)
             self.proc = subprocess.Popen([sys.executable, "-c", code, *self.labels], stdin=subprocess.DEVNULL,
                                          stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
-                                         env=dict(os.environ, NUMBA_CACHE_DIR=str(self.folder)))
+                                         cwd=self.folder,
+                                         env=dict(os.environ, NUMBA_CACHE_DIR=str(self.folder), PYTHONPATH=path))
         except OSError:  # no helper: this process compiles its groups too
             self.proc = None
 
@@ -306,8 +311,9 @@ class _Helper:
         versions first, its index (which names them) last, each written whole before it is named."""
         if self.proc is None or self.folder is None:
             return
-        for index in self.folder.glob("*/*/*.nbi"):
-            mine = self.cache / index.relative_to(self.folder / self.cache.name)
+        theirs = self.folder / self.cache.name  # (kernels of other sources would be in another folder)
+        for index in theirs.glob("*/*.nbi"):
+            mine = self.cache / index.relative_to(theirs)
             if mine.exists():
                 continue
             try:

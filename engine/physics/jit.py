@@ -51,13 +51,8 @@ F = TypeVar("F", bound=Callable)
 
 try:
     import numba
-    import numba.typed
 except ImportError:  # the same code, interpreted
     numba = None
-
-# A list a kernel makes and keeps between calls: passing it costs one argument however much it holds
-# (numba's typed list; a plain list where the code runs interpreted).
-HeldList = numba.typed.List if numba is not None else list
 
 COMPILED = numba is not None and os.environ.get("NUMBA_DISABLE_JIT", "0") in ("", "0")
 ENGINE_DIR = Path(__file__).resolve().parents[1]

@@ -16,6 +16,8 @@ of the same types, so one compiled `run_stages` serves every world.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import esper
 import numpy as np
 
@@ -33,7 +35,7 @@ from polygolf.engine.physics.body import COLUMNS, BodyStore
 from polygolf.engine.physics.contact import ContactTable
 from polygolf.engine.physics.geometry import Areas
 from polygolf.engine.physics.grid import FatBoxes
-from polygolf.engine.physics.jit import HeldList, kernel, warm_up
+from polygolf.engine.physics.jit import COMPILED, kernel, numba, warm_up
 from polygolf.engine.physics.motion import accelerate, drag, kinetic_energy, turn
 from polygolf.engine.systems.broadphase import BroadphaseProcessor, pick
 from polygolf.engine.systems.ccd import CCDProcessor, sweep
@@ -82,91 +84,117 @@ def measure_substep(state: np.ndarray, stats: np.ndarray, metrics: np.ndarray) -
     stats[PENETRATION] = 0.0
 
 
+# What a run keeps between calls (`hold`), as fields of one structure: passing it costs one argument
+# however much it holds, and a stage reads only its own fields, in the branch that runs it. numba
+# counts a reference to every array it takes out of a structure and lets go of it after; taken out
+# and let go within one branch, the two cancel and are compiled away. (Taken out all at once ahead
+# of the substeps' loops, a run's hundred-odd arrays cost some 300 counts a call: a quarter of a
+# lone ball's frame.)
+HELD_FIELDS = ("codes", "state", "shapes", "walls", "fat_boxes", "inputs", "candidates", "table", "found")
+
+if COMPILED:
+    from numba.experimental import structref
+
+    @structref.register
+    class _HeldType(numba.types.StructRef):
+        def preprocess_fields(self, fields: tuple) -> tuple:
+            return tuple((name, numba.types.unliteral(typ)) for name, typ in fields)
+
+    class Held(structref.StructRefProxy):
+        """A run's stage codes, a store's state; what the stages share, the shapes (`Shapes.packed`),
+        the walls (`StaticWorld.packed`) and their fat boxes; each stage's inputs; and what changes
+        from substep to substep: the candidates (`Candidates.arrays`), the contact table
+        (`ContactTable.arrays`: the next run's warm start) and the broadphase's found-walls array
+        (grown when it must be)."""
+
+    structref.define_proxy(Held, _HeldType, list(HELD_FIELDS))
+else:
+    @dataclass(slots=True)
+    class Held:  # (the same fields, where the kernels run interpreted)
+        codes: np.ndarray
+        state: np.ndarray
+        shapes: tuple
+        walls: tuple
+        fat_boxes: tuple
+        inputs: tuple
+        candidates: tuple
+        table: tuple
+        found: np.ndarray
+
+
 @kernel
 def hold(codes: np.ndarray, state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple,
-         candidates: tuple, table: tuple, found: np.ndarray) -> tuple[HeldList, HeldList]:
-    """What a run keeps between calls, in one list (passing it costs one argument, not a hundred):
-    its stage codes, a store's state; what the stages share, the shapes (`Shapes.packed`), the
-    walls (`StaticWorld.packed`) and their fat boxes; each stage's inputs; and in a list of its own
-    (what changes from substep to substep) the candidates (`Candidates.arrays`), the contact table
-    (`ContactTable.arrays`: the next run's warm start) and the broadphase's found-walls array
-    (grown when it must be). Returns both lists: what goes in and out of the run is reached through
-    the small one, whose type is quick to compile."""
-    passed = HeldList()
-    passed.append((candidates, table, found))
-    held = HeldList()
-    held.append((codes, state, shapes, walls, fat_boxes, inputs, passed))
-    return held, passed
+         candidates: tuple, table: tuple, found: np.ndarray) -> Held:
+    """What a run keeps between calls (`Held`)."""
+    return Held(codes, state, shapes, walls, fat_boxes, inputs, candidates, table, found)
 
 
 @kernel
-def held_table(passed: HeldList) -> tuple:
-    """The contact table a run keeps (`ContactTable.arrays`), from its passed list (`hold`)."""
-    return passed[0][1]
+def held_table(held: Held) -> tuple:
+    """The contact table a run keeps (`ContactTable.arrays`)."""
+    return held.table
 
 
 @kernel
-def put_table(passed: HeldList, table: tuple) -> None:
+def put_table(held: Held, table: tuple) -> None:
     """Give a run the contact table to go on from."""
-    candidates, _, found = passed[0]
-    passed[0] = (candidates, table, found)
+    held.table = table
 
 
 @kernel
-def held_candidates(passed: HeldList) -> tuple:
+def held_candidates(held: Held) -> tuple:
     """The candidates a run keeps (`Candidates.arrays`)."""
-    return passed[0][0]
+    return held.candidates
 
 
 @kernel
-def put_candidates(passed: HeldList, candidates: tuple) -> None:
+def put_candidates(held: Held, candidates: tuple) -> None:
     """Give a run the candidates to use."""
-    _, table, found = passed[0]
-    passed[0] = (candidates, table, found)
+    held.candidates = candidates
 
 
 @kernel
-def run_stages(held: HeldList, substeps: int, dt: float, stats: np.ndarray, metrics: np.ndarray, measure: bool
-               ) -> int:
+def run_stages(held: Held, substeps: int, dt: float, stats: np.ndarray, metrics: np.ndarray, measure: bool) -> int:
     """A run's stages (`hold`), in order, `substeps` times, each with its inputs, and
     `measure_substep` after each substep with `measure`. Returns how many manifolds the contact
     table it holds now has."""
-    codes, state, shapes, walls, fat_boxes, inputs, passed = held[0]
-    candidates, table, found = passed[0]
     for _ in range(substeps):
-        for code in codes:
+        for code in held.codes:
             if code == INTEGRATE:
-                integrate(state, table[0], inputs[INTEGRATE], dt)
+                integrate(held.state, held.table[0], held.inputs[INTEGRATE], dt)
             elif code == SPIN:
-                turn(state, dt)
+                turn(held.state, dt)
             elif code == GRAVITY:
-                rows, push, which = inputs[GRAVITY]
-                accelerate(state, rows, push, which, dt)
+                rows, push, which = held.inputs[GRAVITY]
+                accelerate(held.state, rows, push, which, dt)
             elif code == SLOPE:
-                push_on_slopes(state, inputs[SLOPE], dt)
+                push_on_slopes(held.state, held.inputs[SLOPE], dt)
             elif code == SAND:
-                scale_on_surfaces(state, inputs[SAND])
+                scale_on_surfaces(held.state, held.inputs[SAND])
             elif code == ICE:
-                scale_on_surfaces(state, inputs[ICE])
+                scale_on_surfaces(held.state, held.inputs[ICE])
             elif code == DRAG:
-                rows, rates = inputs[DRAG]
-                drag(state, rows, rates, dt)
+                rows, rates = held.inputs[DRAG]
+                drag(held.state, rows, rates, dt)
             elif code == CCD:
-                stats[TOI_HITS] += sweep(state, shapes, walls, fat_boxes, inputs[CCD])
+                stats[TOI_HITS] += sweep(held.state, held.shapes, held.walls, held.fat_boxes, held.inputs[CCD])
             elif code == BROADPHASE:
-                candidates, found = pick(state, shapes, walls, fat_boxes, inputs[BROADPHASE], found)
+                candidates, found = pick(held.state, held.shapes, held.walls, held.fat_boxes, held.inputs[BROADPHASE],
+                                         held.found)
+                held.candidates = candidates
+                held.found = found
             elif code == NARROWPHASE:
-                table = touch(state, shapes, walls, inputs[NARROWPHASE], candidates, table, stats, dt)
+                held.table = touch(held.state, held.shapes, held.walls, held.inputs[NARROWPHASE], held.candidates,
+                                   held.table, stats, dt)
             elif code == RESOLVE:
-                stats[COLD_RESTARTS] += resolve(state, walls, inputs[RESOLVE], table, dt)
+                stats[COLD_RESTARTS] += resolve(held.state, held.walls, held.inputs[RESOLVE], held.table, dt)
             elif code == IMPACTS:
-                hear(table, inputs[IMPACTS])
+                hear(held.table, held.inputs[IMPACTS])
             elif code == RESTITUTION:
-                stats[BOUNCES] += bounce(state, walls, table)
+                stats[BOUNCES] += bounce(held.state, held.walls, held.table)
         if measure:
-            measure_substep(state, stats, metrics)
-    passed[0] = (candidates, table, found)
-    return len(table[1])
+            measure_substep(held.state, stats, metrics)
+    return len(held.table[1])
 
 
 def _no_work() -> tuple:
@@ -218,7 +246,7 @@ class StageRun(esper.Processor):
         self._finds, self._uses = BROADPHASE in codes, NARROWPHASE in codes
         self._impacts = self._by_code.get(IMPACTS)
         self._key: tuple = ()
-        self._held = self._passed = None
+        self._held: Held | None = None
         self._holds = 0  # manifolds in the table it holds
 
     def _hold(self) -> None:
@@ -234,7 +262,7 @@ class StageRun(esper.Processor):
         inputs = tuple(self._by_code[code].inputs() if code in self._by_code else IDLE[code]
                        for code in range(len(IDLE)))
         state = res.bodies.state
-        self._held, self._passed = hold(self.codes, state, res.shapes.packed, res.statics.packed,
+        self._held = hold(self.codes, state, res.shapes.packed, res.statics.packed,
                                         res.fat_boxes.of(state, len(res.statics.grid)), inputs,
                                         res.candidates.arrays, table.arrays, np.zeros(16, dtype=np.int64))
         self._key = key
@@ -243,16 +271,16 @@ class StageRun(esper.Processor):
 
     def table(self) -> ContactTable:
         """The contact table this run holds."""
-        return contact_table(held_table(self._passed), self.res.bodies, self.res.statics.body)
+        return contact_table(held_table(self._held), self.res.bodies, self.res.statics.body)
 
     def process(self, substeps: int = 1, metrics: np.ndarray | None = None) -> None:
         res = self.res
         self._hold()
         contacts = res.contacts
         if contacts.keeper is not self and (contacts.size or self._holds):  # a table put there since
-            put_table(self._passed, contacts.table.arrays)
+            put_table(self._held, contacts.table.arrays)
         if self._uses and not self._finds:
-            put_candidates(self._passed, res.candidates.arrays)
+            put_candidates(self._held, res.candidates.arrays)
         self._holds = run_stages(self._held, substeps, res.config.dt, res.stats.values,
                                  _NO_METRICS if metrics is None else metrics, metrics is not None)
         contacts.keep(self, self._holds, fresh=self._uses)
@@ -260,7 +288,7 @@ class StageRun(esper.Processor):
             self._impacts.tell()
         if self._finds and not self._uses:
             found = res.candidates
-            found.near, found.near_first, found.near_found, found.pair_ents = held_candidates(self._passed)
+            found.near, found.near_first, found.near_found, found.pair_ents = held_candidates(self._held)
 
 
 def schedule(res: Resources, processors: list[esper.Processor]) -> list[esper.Processor]:
@@ -296,13 +324,13 @@ def _empty_world() -> tuple:
 def _warm() -> None:
     """A run of every stage, and what goes in and out of one."""
     table, candidates, shapes, walls, state, dt, stats, fat_boxes, found = _empty_world()
-    held, passed = hold(np.array(sorted(CODES.values()), dtype=np.int64), state, shapes, walls, fat_boxes,
+    held = hold(np.array(sorted(CODES.values()), dtype=np.int64), state, shapes, walls, fat_boxes,
                         IDLE, candidates, table, found)
-    put_table(passed, table)
+    put_table(held, table)
     run_stages(held, 1, dt, stats, np.zeros(5), True)
-    held_table(passed)
-    put_candidates(passed, candidates)
-    held_candidates(passed)
+    held_table(held)
+    put_candidates(held, candidates)
+    held_candidates(held)
     measure_substep(state, stats, np.zeros(5))
 
 

@@ -84,12 +84,10 @@ def measure_substep(state: np.ndarray, stats: np.ndarray, metrics: np.ndarray) -
     stats[PENETRATION] = 0.0
 
 
-# What a run keeps between calls (`hold`), as fields of one structure: passing it costs one argument
-# however much it holds, and a stage reads only its own fields, in the branch that runs it. numba
-# counts a reference to every array it takes out of a structure and lets go of it after; taken out
-# and let go within one branch, the two cancel and are compiled away. (Taken out all at once ahead
-# of the substeps' loops, a run's hundred-odd arrays cost some 300 counts a call: a quarter of a
-# lone ball's frame.)
+# What a run keeps between calls (`hold`), as the fields of one numba structure (a StructRef): passing
+# it costs one argument however much it holds, and numba's dispatch reads its type off the object. (It
+# was a typed list: numba hashed the list's long type at every call, and the item taken out of it was
+# copied with a reference counted on each of its hundred-odd arrays.)
 HELD_FIELDS = ("codes", "state", "shapes", "walls", "fat_boxes", "inputs", "candidates", "table", "found")
 
 if COMPILED:
@@ -263,8 +261,8 @@ class StageRun(esper.Processor):
                        for code in range(len(IDLE)))
         state = res.bodies.state
         self._held = hold(self.codes, state, res.shapes.packed, res.statics.packed,
-                                        res.fat_boxes.of(state, len(res.statics.grid)), inputs,
-                                        res.candidates.arrays, table.arrays, np.zeros(16, dtype=np.int64))
+                          res.fat_boxes.of(state, len(res.statics.grid)), inputs,
+                          res.candidates.arrays, table.arrays, np.zeros(16, dtype=np.int64))
         self._key = key
         self._holds = len(table)
         res.contacts.keep(self, self._holds)

@@ -9,7 +9,7 @@ import pytest
 
 from polygolf.engine.physics import polygon
 from polygolf.engine.physics.collide import collide_polygons, separation
-from polygolf.engine.physics.geometry import ConvexSet
+from polygolf.engine.physics.geometry import ConvexSet, ShapeTable
 from polygolf.engine.physics.toi import time_of_impact, toi_work
 
 
@@ -139,3 +139,28 @@ def test_a_length_compared_with_a_bound_is_judged_as_the_exact_one_would_be():
         assert (quick < bound) == (exact < bound) and (quick >= bound) == (exact >= bound), (x, y, plus, more, bound)
         if abs(exact - bound) <= 1e-7 * abs(bound):
             assert quick == exact
+
+
+def test_a_shape_table_holds_each_body_s_pieces_in_order_whatever_the_mix():
+    """Bodies of one, two and three pieces, repeated and mixed (a search's thousand balls share one
+    set): body k's pieces, vertices, normals and reaches are its own set's, in order; none, an empty table."""
+    square = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+    triangle = [(0.0, 0.0), (2.0, 0.0), (0.0, 3.0)]
+    hexagon = [(math.cos(k * math.pi / 3), math.sin(k * math.pi / 3)) for k in range(6)]
+    kinds = [ConvexSet.of(pieces, [polygon.edge_normals(p) for p in pieces])
+             for pieces in ([hexagon], [square, triangle], [triangle, hexagon, square])]
+    bodies = [kinds[k % 3] for k in (0, 1, 2, 2, 0, 0, 1, 2, 1, 0)] + [kinds[0]] * 40
+    table = ShapeTable.of(bodies)
+    joined = table.pieces
+    assert len(table.body_first) == len(bodies) + 1 and joined.first[-1] == len(joined.verts)
+    assert np.array_equal(joined.every_piece, np.arange(len(joined)))
+    for k, own in enumerate(bodies):
+        pieces = range(table.body_first[k], table.body_first[k + 1])
+        assert len(pieces) == len(own)
+        for j, p in enumerate(pieces):
+            rows, own_rows = slice(joined.first[p], joined.first[p + 1]), slice(own.first[j], own.first[j + 1])
+            assert np.array_equal(joined.verts[rows], own.verts[own_rows])
+            assert np.array_equal(joined.normals[rows], own.normals[own_rows])
+            assert joined.reach[p] == own.reach[j]
+    empty = ShapeTable.of([])
+    assert len(empty.pieces) == 0 and empty.body_first.tolist() == [0] and empty.pieces.verts.shape == (0, 2)

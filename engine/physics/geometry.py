@@ -51,17 +51,22 @@ class ShapeTable:
 
     @classmethod
     def of(cls, sets: Sequence[ConvexSet]) -> ShapeTable:
-        verts = np.concatenate([s.verts for s in sets]) if sets else np.zeros((0, 2))
-        normals = np.concatenate([s.normals for s in sets]) if sets else np.zeros((0, 2))
-        first, body_first, rows = [0], [0], 0
-        for s in sets:
-            first += (s.first[1:] + rows).tolist()
-            rows += len(s.verts)
-            body_first.append(len(first) - 1)
-        reach = np.concatenate([s.reach for s in sets]) if sets else np.zeros(0)
-        joined = ConvexSet(verts, normals, np.array(first, dtype=np.int64), reach,
-                           np.arange(len(first) - 1, dtype=np.int64))
-        return cls(joined, np.array(body_first, dtype=np.int64))
+        """(Worked out with whole arrays, not a set at a time: a search puts a thousand balls in a world.)"""
+        if not sets:
+            return cls(ConvexSet(np.zeros((0, 2)), np.zeros((0, 2)), np.zeros(1, dtype=np.int64), np.zeros(0),
+                                 np.zeros(0, dtype=np.int64)), np.zeros(1, dtype=np.int64))
+        verts = np.concatenate([s.verts for s in sets])
+        normals = np.concatenate([s.normals for s in sets])
+        reach = np.concatenate([s.reach for s in sets])
+        pieces = np.array([len(s.first) - 1 for s in sets], dtype=np.int64)
+        rows = np.array([len(s.verts) for s in sets], dtype=np.int64)
+        first = np.empty(int(pieces.sum()) + 1, dtype=np.int64)
+        first[:-1] = np.concatenate([s.first[:-1] for s in sets]) + np.repeat(np.cumsum(rows) - rows, pieces)
+        first[-1] = len(verts)
+        body_first = np.zeros(len(sets) + 1, dtype=np.int64)
+        np.cumsum(pieces, out=body_first[1:])
+        joined = ConvexSet(verts, normals, first, reach, np.arange(len(first) - 1, dtype=np.int64))
+        return cls(joined, body_first)
 
 
 @leaf_kernel

@@ -5,10 +5,10 @@
 Equal work: the same bodies, walls, materials and start, stepped in 1/60 s frames of the preset's
 substeps, each substep with the preset's velocity iterations (pymunk's `iterations`). pymunk has no
 split impulses, continuous collision or rolling drag, so PolyGolf does a little more per step; both
-engines skip sleeping. Engines are run interleaved, repeat after repeat, and each figure is the median
-over repeats of the time per frame (wall clock, one core) after a first frame, timed on its own and
-shown apart ("first frame": PolyGolf packs what its run of stages holds, Chipmunk builds its spatial
-index).
+engines skip sleeping. Engines are run interleaved, repeat after repeat (after one round not counted),
+and each figure is the median over repeats of the time per frame (wall clock, one core) after a first
+frame, timed on its own and shown apart ("first frame": PolyGolf packs what its run of stages holds,
+Chipmunk builds its spatial index).
 
 Scenarios: 100 and 1000 pentagons moving in a closed box; one ball bouncing round Meadow's Obstacle
 Field (elastic, no drag, so it never stops); K shots at once on that hole (PolyGolf: `simulate_shots`,
@@ -145,9 +145,12 @@ def main() -> None:
     print(f"{'scenario':<30}{'PolyGolf':>14}{'pymunk':>14}{'ratio':>9}{'first frame':>24}")
     for label, scene, frames in scenarios:
         ours, theirs = [], []
-        for _ in range(args.repeats):
-            ours.append(time_polygolf(scene, frames, args.preset))
-            theirs.append(time_pymunk(pymunk_space(scene, knobs.iterations), frames, knobs.substeps))
+        for repeat in range(args.repeats + 1):  # the first round is not counted: caches and the CPU warm up
+            mine = time_polygolf(scene, frames, args.preset)
+            other = time_pymunk(pymunk_space(scene, knobs.iterations), frames, knobs.substeps)
+            if repeat:
+                ours.append(mine)
+                theirs.append(other)
         a, b = statistics.median(t for _, t in ours), statistics.median(t for _, t in theirs)
         a1, b1 = statistics.median(f for f, _ in ours), statistics.median(f for f, _ in theirs)
         print(f"{label:<30}{a * 1e6:>11.0f} us{b * 1e6:>11.0f} us{a / b:>8.1f}x{a1 * 1e6:>11.0f} /{b1 * 1e6:>7.0f} us",

@@ -5,10 +5,10 @@
 Equal work: the same bodies, walls, materials and start, stepped in 1/60 s frames of the preset's
 substeps, each substep with the preset's velocity iterations (pymunk's `iterations`). pymunk has no
 split impulses, continuous collision or rolling drag, so PolyGolf does a little more per step; both
-engines skip sleeping. Engines are run interleaved, repeat after repeat (after one round not counted),
-and each figure is the median over repeats of the time per frame (wall clock, one core) after a first
-frame, timed on its own and shown apart ("first frame": PolyGolf packs what its run of stages holds,
-Chipmunk builds its spatial index).
+engines skip sleeping. Engines are run interleaved, repeat after repeat (after one round not counted;
+the garbage collector runs before each timing, outside it), and each figure is the median over
+repeats of the time per frame (wall clock, one core) after a first frame, timed on its own and shown
+apart ("first frame": PolyGolf packs what its run of stages holds, Chipmunk builds its spatial index).
 
 Scenarios: 100 and 1000 pentagons moving in a closed box; one ball bouncing round Meadow's Obstacle
 Field (elastic, no drag, so it never stops); K shots at once on that hole (PolyGolf: `simulate_shots`,
@@ -19,6 +19,7 @@ ball-frames per second.
 from __future__ import annotations
 
 import argparse
+import gc
 import math
 import statistics
 import sys
@@ -74,6 +75,7 @@ def pymunk_space(scene: Scene, iterations: int, collide_bodies: bool = True) -> 
 def time_pymunk(space: pymunk.Space, frames: int, substeps: int) -> tuple[float, float]:
     """(the first frame, the mean of the `frames` frames after it), in seconds."""
     dt = FRAME_DT / substeps
+    gc.collect()  # (neither engine pays for the other's garbage)
     start = time.perf_counter()
     for _ in range(substeps):
         space.step(dt)
@@ -87,6 +89,7 @@ def time_pymunk(space: pymunk.Space, frames: int, substeps: int) -> tuple[float,
 def time_polygolf(scene: Scene, frames: int, preset: str) -> tuple[float, float]:
     """(the first frame, the mean of the `frames` frames after it), in seconds."""
     with build_scene(scene, preset) as sim:
+        gc.collect()
         start = time.perf_counter()
         sim.step(1, measure=False)
         first = time.perf_counter() - start
@@ -115,6 +118,7 @@ def parallel_shots(count: int, preset: str, seconds: float) -> tuple[float, floa
     tee = hole.layout.tee
     shots = [Shot(tee, (2.4 * math.cos(2 * math.pi * k / count), 2.4 * math.sin(2 * math.pi * k / count)))
              for k in range(count)]
+    gc.collect()
     start = time.perf_counter()
     results = simulate_shots(hole, shots, preset, shape=ShapeSpec(regular=6, radius=1.0), max_seconds=seconds)
     ours = sum(r.seconds for r in results) / FRAME_DT / (time.perf_counter() - start)

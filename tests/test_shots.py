@@ -3,6 +3,7 @@ the same shot played alone ends, and the results report drops, time and water pe
 
 from __future__ import annotations
 
+import gc
 import math
 
 import pytest
@@ -12,6 +13,7 @@ from polygolf.engine.golf.holes import find_course, load_all_courses
 from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.golf.shots import Shot, fan, simulate_shots
 from polygolf.engine.loading.scene import ShapeSpec
+from polygolf.engine.physics.jit import compile_kernels
 from polygolf.engine.physics.settings import LINEAR_SLOP
 
 STAR = ShapeSpec(star=(5, 2), radius=1.0)
@@ -100,3 +102,17 @@ def test_water_never_puts_a_ball_back_onto_another(courses):
         assert play.sim.metrics.max_penetration <= LINEAR_SLOP
     finally:
         play.close()
+
+
+def test_a_closed_world_goes_at_once_and_leaves_the_collector_nothing(courses):
+    """A world's run of stages and its resources must not hold each other: a search builds and drops
+    a world per fan of shots, and what such a cycle keeps (every ball's handles) waited for the
+    collector's slowest pass, up to 40 ms in the middle of a search."""
+    compile_kernels()  # (loading a kernel leaves numba's own garbage)
+    hole = find_course(courses, "hazards").holes[8]  # pinball: bumpers and a windmill
+    shots = fan(hole.layout.tee, 8, [2.0])
+    for path in (False, True):
+        simulate_shots(hole, shots, "fast", shape=STAR, max_seconds=0.5, path=path)
+        gc.collect()
+        simulate_shots(hole, shots, "fast", shape=STAR, max_seconds=0.5, path=path)
+        assert gc.collect() == 0, path

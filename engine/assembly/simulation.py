@@ -171,6 +171,7 @@ class Simulation:
             if esper.current_world == self.world:
                 esper.switch_world("default")
             esper.delete_world(self.world)
+        self.res.contacts.let_go()
 
     def __enter__(self) -> Simulation:
         return self

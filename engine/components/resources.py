@@ -200,6 +200,12 @@ class Contacts:
     def table(self, table: ContactTable) -> None:
         self._table, self.keeper, self._stale, self.size = table, None, False, len(table)
 
+    def let_go(self) -> None:
+        """Take the newest table out of the run that holds it and forget the run: a closing world's run
+        and resources would otherwise hold each other, and everything they reach (a thousand balls'
+        handles), until the garbage collector's slowest pass."""
+        self.table = self.table
+
     def keep(self, run: object, size: int, fresh: bool = False) -> None:
         """`run` holds the newest table, of `size` manifolds: a new one (`fresh`: fetched when asked
         for), or the one here."""

@@ -16,7 +16,7 @@ of the same types, so one compiled `run_stages` serves every world.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import make_dataclass
 
 import esper
 import numpy as np
@@ -105,18 +105,8 @@ if COMPILED:
         (grown when it must be)."""
 
     structref.define_proxy(Held, _HeldType, list(HELD_FIELDS))
-else:
-    @dataclass(slots=True)
-    class Held:  # (the same fields, where the kernels run interpreted)
-        codes: np.ndarray
-        state: np.ndarray
-        shapes: tuple
-        walls: tuple
-        fat_boxes: tuple
-        inputs: tuple
-        candidates: tuple
-        table: tuple
-        found: np.ndarray
+else:  # (the same fields, where the kernels run interpreted)
+    Held = make_dataclass("Held", HELD_FIELDS, slots=True)
 
 
 @kernel

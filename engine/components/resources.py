@@ -54,10 +54,15 @@ class StaticWorld:
         return self.pieces.verts, self.pieces.normals, self.pieces.first, self.internal, self.hidden
 
     @property
+    def row(self) -> np.ndarray:
+        """The stand-in body's row: all the solver reads of the walls."""
+        return self.body._row
+
+    @property
     def packed(self) -> tuple:
         """Everything a stage's kernel reads of the walls, in one tuple: `arrays`, the pieces'
         materials, owners and indices, the stand-in body's row, the grid's `arrays`."""
-        return (self.arrays, self.materials, self.owner, self.index, self.body._row, self.grid.arrays)
+        return (self.arrays, self.materials, self.owner, self.index, self.row, self.grid.arrays)
 
     @classmethod
     def of(cls, walls: Sequence[tuple[int, Wall]], cell_size: float) -> StaticWorld:

@@ -4,7 +4,7 @@ import numpy as np
 from polygolf.engine.components import Bumper
 from polygolf.engine.components.resources import HEARD_LIMIT, Resources
 from polygolf.engine.physics.contact import K_OTHER, P_APPROACH, P_X, P_Y
-from polygolf.engine.physics.jit import inlined_kernel
+from polygolf.engine.physics.jit import leaf_kernel
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 
 KINDS = ("wall", "bumper", "body")  # an impact's kind, by its code in the heard rows
@@ -57,7 +57,7 @@ class ImpactsProcessor(esper.Processor):
         self._count[0] = 0
 
 
-@inlined_kernel
+@leaf_kernel
 def hear(table: tuple, inputs: tuple) -> None:
     """The stage on a table's columns (`ContactTable.arrays`): each manifold with a point closing
     faster than RESTITUTION_THRESHOLD, in the table's order, as a row (its kind: a body, a bumper or

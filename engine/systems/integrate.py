@@ -4,7 +4,7 @@ import numpy as np
 from polygolf.engine.components import Body, Drag
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.body import Selection
-from polygolf.engine.physics.jit import inlined_kernel
+from polygolf.engine.physics.jit import leaf_kernel
 from polygolf.engine.physics.motion import advance, mark_touching
 from polygolf.engine.physics.settings import REST_ANGULAR, REST_LINEAR, REST_SPEED_CAP, TIME_TO_REST
 
@@ -46,12 +46,13 @@ class IntegrateProcessor(esper.Processor):
         integrate(self.bodies.state, self.contacts.table.ents, inputs, self.config.dt)
 
 
-@inlined_kernel
+@leaf_kernel
 def integrate(state: np.ndarray, touching: np.ndarray, inputs: tuple, dt: float) -> None:
     """The stage on a store's state, given this substep's contacts' entity pairs (`touching`)."""
     settles, dragged, touched, lookup = inputs
     if len(touching) or touched[0]:
-        settles[:] = dragged
+        for k in range(len(settles)):  # (a leaf copies element by element: numba's slice copy would need its counts)
+            settles[k] = dragged[k]
         mark_touching(settles, touching, lookup)
         touched[0] = len(touching) > 0
     advance(state, settles, dt, REST_LINEAR * dt, REST_ANGULAR * dt, REST_SPEED_CAP, TIME_TO_REST)

@@ -58,9 +58,7 @@ def touch(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple, candida
     columns (`ContactTable.arrays`) for the candidates (`Candidates.arrays`), warm-started from the
     old ones; the deepest overlap goes into `stats`."""
     near, near_first, near_found, pair_ents = candidates
-    if not len(near) and not len(pair_ents):
-        if not len(old[1]):
-            return old  # still nothing: nothing to make
+    if not len(near) and not len(pair_ents):  # (with no table either, the callers leave it at that)
         return (np.zeros((0, 2), dtype=np.int64), np.zeros((0, 2), dtype=np.int64), np.zeros((0, MANIFOLD_COLUMNS)),
                 np.zeros(0, dtype=np.bool_), np.zeros(1, dtype=np.int64), np.zeros((0, POINT_COLUMNS)),
                 np.zeros((0, KEY_COLUMNS), dtype=np.int64))

@@ -23,15 +23,14 @@ class ResolveProcessor(esper.Processor):
     def process(self) -> None:
         table = self.contacts.table
         if len(table):
-            self.stats.cold_restarts += resolve(table.store.state, self.statics.packed, self.inputs(), table.arrays,
-                                                self.config.dt)
+            self.stats.cold_restarts += resolve(table.store.state, self.statics.row, self.inputs(),
+                                                table.arrays, self.config.dt)
 
 
 @inlined_kernel
-def resolve(state: np.ndarray, walls: tuple, inputs: tuple, table: tuple, dt: float) -> int:
-    """The stage on a store's state (the static world's row from `StaticWorld.packed`); returns how
-    many islands were solved cold."""
-    if not len(table[1]):
-        return 0
+def resolve(state: np.ndarray, static: np.ndarray, inputs: tuple, table: tuple, dt: float) -> int:
+    """The stage on a store's state and a table with contacts (the caller looks first: a call with
+    nothing to solve would still count a reference to each array it is handed); `static` is the
+    static world's row. Returns how many islands were solved cold."""
     warm, iterations, position_iterations, correction, friction = inputs
-    return solver.solve_table(state, walls[4], table, warm, iterations, position_iterations, correction, dt, friction)
+    return solver.solve_table(state, static, table, warm, iterations, position_iterations, correction, dt, friction)

@@ -19,13 +19,11 @@ class RestitutionProcessor(esper.Processor):
     def process(self) -> None:
         table = self.contacts.table
         if len(table):
-            self.stats.bounces += bounce(table.store.state, self.statics.packed, table.arrays)
+            self.stats.bounces += bounce(table.store.state, self.statics.row, table.arrays)
 
 
 @inlined_kernel
-def bounce(state: np.ndarray, walls: tuple, table: tuple) -> int:
-    """The stage on a store's state (the static world's row from `StaticWorld.packed`); returns how
-    many points bounced."""
-    if not len(table[1]):
-        return 0
-    return solver.restitute(state, walls[4], table, RESTITUTION_THRESHOLD)
+def bounce(state: np.ndarray, static: np.ndarray, table: tuple) -> int:
+    """The stage on a store's state and a table with contacts (the caller looks first, as for
+    `resolve`); `static` is the static world's row. Returns how many points bounced."""
+    return solver.restitute(state, static, table, RESTITUTION_THRESHOLD)

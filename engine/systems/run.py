@@ -176,13 +176,16 @@ def run_stages(held: Held, substeps: int, dt: float, stats: np.ndarray, metrics:
             elif code == BROADPHASE:
                 candidates, found = pick(state, shapes, walls, fat_boxes, inputs[BROADPHASE], found)
             elif code == NARROWPHASE:
-                table = touch(state, shapes, walls, inputs[NARROWPHASE], candidates, table, stats, dt)
+                if len(candidates[0]) or len(candidates[3]) or len(table[1]):  # (else: nothing near, no table)
+                    table = touch(state, shapes, walls, inputs[NARROWPHASE], candidates, table, stats, dt)
             elif code == RESOLVE:
-                stats[COLD_RESTARTS] += resolve(state, walls, inputs[RESOLVE], table, dt)
+                if len(table[1]):
+                    stats[COLD_RESTARTS] += resolve(state, walls[4], inputs[RESOLVE], table, dt)
             elif code == IMPACTS:
                 hear(table, inputs[IMPACTS])
             elif code == RESTITUTION:
-                stats[BOUNCES] += bounce(state, walls, table)
+                if len(table[1]):
+                    stats[BOUNCES] += bounce(state, walls[4], table)
         if measure:
             measure_substep(state, stats, metrics)
     held.candidates, held.table, held.found = candidates, table, found
@@ -336,6 +339,6 @@ def _warm_alone() -> None:
     sweep(state, shapes, walls, fat_boxes, IDLE[CCD])
     pick(state, shapes, walls, fat_boxes, IDLE[BROADPHASE], found)
     touch(state, shapes, walls, IDLE[NARROWPHASE], candidates, table, stats, dt)
-    resolve(state, walls, IDLE[RESOLVE], table, dt)
+    resolve(state, walls[4], IDLE[RESOLVE], table, dt)
     hear(table, IDLE[IMPACTS])
-    bounce(state, walls, table)
+    bounce(state, walls[4], table)

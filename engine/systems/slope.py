@@ -5,7 +5,7 @@ from polygolf.engine.components import Ball, Body, Region, Slope
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.body import Selection
 from polygolf.engine.physics.geometry import first_area
-from polygolf.engine.physics.jit import inlined_kernel
+from polygolf.engine.physics.jit import leaf_kernel
 from polygolf.engine.physics.motion import accelerate
 from polygolf.engine.systems.areas import AreaIndex
 
@@ -31,7 +31,7 @@ class SlopeProcessor(esper.Processor):
         push_on_slopes(self.bodies.state, inputs, self.config.dt)
 
 
-@inlined_kernel
+@leaf_kernel
 def push_on_slopes(state: np.ndarray, inputs: tuple, dt: float) -> None:
     """The stage on a store's state."""
     rows, verts, first, boxes, pushes, on = inputs

@@ -5,7 +5,7 @@ from polygolf.engine.components import Ball, Body, Drag, Region
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.body import Selection
 from polygolf.engine.physics.geometry import first_area
-from polygolf.engine.physics.jit import inlined_kernel
+from polygolf.engine.physics.jit import leaf_kernel
 from polygolf.engine.physics.motion import take_scale
 from polygolf.engine.systems.areas import AreaIndex
 
@@ -32,7 +32,7 @@ class SurfaceProcessor(esper.Processor):
         scale_on_surfaces(self.bodies.state, inputs)
 
 
-@inlined_kernel
+@leaf_kernel
 def scale_on_surfaces(state: np.ndarray, inputs: tuple) -> None:
     """The stage on a store's state."""
     rows, verts, first, boxes, scales, on = inputs

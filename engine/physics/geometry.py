@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from polygolf.engine.physics.body import ASLEEP, COLUMNS, X, Y
-from polygolf.engine.physics.jit import leaf_kernel, warm_up
+from polygolf.engine.physics.jit import inlined_leaf, leaf_kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
 
 
@@ -69,7 +69,7 @@ class ShapeTable:
         return cls(joined, body_first)
 
 
-@leaf_kernel
+@inlined_leaf
 def pose_piece(verts: np.ndarray, normals: np.ndarray, start: int, end: int, x: float, y: float, angle: float,
                out_verts: np.ndarray, out_normals: np.ndarray) -> None:
     """Rows start..end of a body-frame set, turned by `angle` and moved to (x, y), into rows 0.. of

@@ -28,7 +28,7 @@ NO_HIT = 2.0  # any fraction >= 1: the motion ends before an impact
 _CLEARANCE = 1e-6  # m: beyond rounding, for the bounding circle's quick answer
 
 
-@leaf_kernel
+@inlined_leaf
 def _face_separations(verts: np.ndarray, normals: np.ndarray, others: np.ndarray, count: int, other_count: int,
                       seps: np.ndarray, at: int) -> None:
     """Separation of the first `other_count` rows of `others` from each of the first `count` faces,
@@ -44,7 +44,7 @@ def _face_separations(verts: np.ndarray, normals: np.ndarray, others: np.ndarray
         seps[at + i] = lowest
 
 
-@leaf_kernel
+@inlined_leaf
 def _separations(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, xa: float, ya: float, aa: float,
                  lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, xb: float, yb: float, ab: float, b_posed: bool,
                  pa_v: np.ndarray, pa_n: np.ndarray, pb_v: np.ndarray, pb_n: np.ndarray, b_first: bool,

@@ -18,7 +18,8 @@ from polygolf.engine.components import Ball, Body, HoleState, Material, ShotInpu
 from polygolf.engine.golf.holes import Hole
 from polygolf.engine.golf.world import DEFAULT_BALL, hole_spec
 from polygolf.engine.loading.scene import ShapeSpec
-from polygolf.engine.physics.body import ASLEEP, Selection, X, Y
+from polygolf.engine.physics.body import ANGLE, Selection, X, Y
+from polygolf.engine.physics.motion import came_to_rest
 from polygolf.engine.physics.polygon import Outline
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import FRAME_DT
@@ -81,15 +82,16 @@ def simulate_shots(hole: Hole, shots: Sequence[Shot], preset: Knobs | str = "bal
     try:
         esper.switch_world(sim.world)
         rows = sorted(esper.get_components(Body, ShotInput, HoleState))  # entity order = shots' order
-        for (_, (body, shot_input, _)), shot in zip(rows, shots):
+        for (_, (_, shot_input, _)), shot in zip(rows, shots):  # (each ball lies at its shot's start)
             arrow = clamp_arrow(shot.arrow) or (0.0, 0.0)
-            shot_input.request((body.x + shot.grab[0], body.y + shot.grab[1]), arrow)
+            shot_input.request((shot.start[0] + shot.grab[0], shot.start[1] + shot.grab[1]), arrow)
         done: list[float | None] = [None] * len(shots)
         paths: list[list[tuple[float, float]]] = [[] for _ in shots]
         contact: list[int | None] = [None] * len(shots)
         contact_at: list[tuple[float, float] | None] = [None] * len(shots)
         index = {ent: k for k, (ent, _) in enumerate(rows)}
         balls, running = Selection(), np.ones(len(shots), dtype=np.bool_)
+        asleep, resting = np.zeros(len(shots), dtype=np.bool_), np.empty(len(shots), dtype=np.int64)  # came_to_rest's
         frames = 0
         sim.res.events.drain()
         while frames < round(max_seconds / FRAME_DT) and running.any():
@@ -107,17 +109,19 @@ def simulate_shots(hole: Hole, shots: Sequence[Shot], preset: Knobs | str = "bal
                 for k, x, y in zip(np.flatnonzero(running).tolist(), store[moving, X].tolist(),
                                    store[moving, Y].tolist()):
                     paths[k].append((x, y))
-            # A holed ball rests in the cup, so resting covers it.
-            ended = running & (store[picked, ASLEEP] != 0.0)
+            # A holed ball rests in the cup, so resting covers it; a ball ends the first time it rests.
+            ended = resting[:came_to_rest(store, picked, asleep, resting)].tolist()
             if until_contact:
-                ended |= running & np.array([c is not None for c in contact], dtype=np.bool_)
-            for k in np.flatnonzero(ended).tolist():
-                done[k] = frames * FRAME_DT
-            running &= ~ended
-        return [ShotResult(rest=(body.x, body.y), angle=body.angle, holed=state.holed,
+                ended += [k for k, c in enumerate(contact) if c is not None]
+            for k in ended:
+                if running[k]:
+                    done[k], running[k] = frames * FRAME_DT, False
+        store, picked = sim.res.bodies.gather(esper.get_component(Body)), balls.of(sim.res.bodies, rows)
+        poses = store[picked][:, [X, Y, ANGLE]].tolist()
+        return [ShotResult(rest=(x, y), angle=angle, holed=state.holed,
                            seconds=done[k] if done[k] is not None else frames * FRAME_DT,
                            penalties=state.penalties, path=paths[k], contact=contact[k], contact_at=contact_at[k])
-                for k, (_, (body, _, state)) in enumerate(rows)]
+                for k, ((x, y, angle), (_, (_, _, state))) in enumerate(zip(poses, rows))]
     finally:
         sim.close()
 

@@ -18,20 +18,20 @@ class CupProcessor(esper.Processor):
         self.events, self.bodies = res.events, res.bodies
         self._balls = Selection()
         self._cups: list | None = None
-        self._packed = np.zeros((0, 4))
+        self._packed = np.zeros((0, 4))  # each cup's x, y, radius, max_speed
         self._caught = np.zeros(0, dtype=np.int64)
 
     def process(self) -> None:
         cups = esper.get_component(Cup)
         if cups is not self._cups:
-            self._packed = np.array([(c.x, c.y, c.radius, c.max_speed) for _, c in cups], dtype=np.float64)
+            self._packed = np.array([(c.x, c.y, c.radius, c.max_speed) for _, c in cups], dtype=np.float64).reshape(-1, 4)
             self._cups = cups
         state = self.bodies.gather(esper.get_component(Body))
         balls = esper.get_components(Body, Ball)
         rows = self._balls.of(self.bodies, balls)
         if len(self._caught) != len(rows):
             self._caught = np.empty(len(rows), dtype=np.int64)
-        if not cups or not captured(state, rows, self._packed.reshape(-1, 4), self._caught):
+        if not cups or not captured(state, rows, self._packed, self._caught):
             return
         for q in np.flatnonzero(self._caught >= 0).tolist():
             ent, (body, ball) = balls[q]

@@ -72,7 +72,7 @@ def _separations(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, xa: float, 
     return best
 
 
-@inlined_leaf
+@leaf_kernel
 def _advance(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, start_a: np.ndarray, end_a: np.ndarray,
              lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, start_b: np.ndarray, end_b: np.ndarray,
              b_posed: bool, rates: np.ndarray, target: float, tolerance: float, allowance: float,

@@ -24,7 +24,8 @@ class CupProcessor(esper.Processor):
     def process(self) -> None:
         cups = esper.get_component(Cup)
         if cups is not self._cups:
-            self._packed = np.array([(c.x, c.y, c.radius, c.max_speed) for _, c in cups], dtype=np.float64).reshape(-1, 4)
+            self._packed = np.array([(c.x, c.y, c.radius, c.max_speed) for _, c in cups],
+                                    dtype=np.float64).reshape(-1, 4)
             self._cups = cups
         state = self.bodies.gather(esper.get_component(Body))
         balls = esper.get_components(Body, Ball)

@@ -144,6 +144,16 @@ def test_drag_follows_the_closed_form_and_uses_the_surface_scale_once():
     assert state[1, DRAG_SCALE] == 1.0  # reset: the surface says so again next substep if still on it
 
 
+def test_drag_of_a_speed_whose_square_overflows_is_still_the_closed_form():
+    # Drag takes the speed as the root of the sum of squares only where the squares are normal
+    # numbers: here they overflow, and the root of infinity would turn the velocity into NaN.
+    state = rows(1, vx=3e160, vy=4e160)
+    motion.drag(state, np.zeros(1, dtype=np.int64), np.array([[0.4, 0.0, 0.0, 0.0]]), DT)
+    assert np.isfinite(state[0, [VX, VY]]).all()
+    assert state[0, VX] == pytest.approx(3e160 * math.exp(-0.4 * DT), rel=1e-12)
+    assert state[0, VY] == pytest.approx(4e160 * math.exp(-0.4 * DT), rel=1e-12)
+
+
 def test_drag_never_reverses_a_body():
     state = rows(1, vx=1e-4, spin=1e-4)
     motion.drag(state, np.zeros(1, dtype=np.int64), np.array([[0.0, 0.0, 5.0, 5.0]]), DT)

@@ -97,7 +97,7 @@ def _clip(points: np.ndarray, count: int, nx: float, ny: float, offset: float, p
     return out
 
 
-@inlined_leaf
+@leaf_kernel
 def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndarray, nb: np.ndarray, sb: int,
                    eb: int, internal: np.ndarray, hidden: np.ndarray, seams: bool, margin: float,
                    out: np.ndarray, row: int, clip: np.ndarray) -> int:
@@ -244,7 +244,7 @@ def wall_contacts(va: np.ndarray, na: np.ndarray, shape_verts: np.ndarray, shape
     return kept
 
 
-@inlined_leaf
+@leaf_kernel
 def _circle_beyond(wv: np.ndarray, wn: np.ndarray, s: int, e: int, x: float, y: float, reach: float) -> bool:
     """Whether the point (x, y) lies more than `reach` beyond some face of the wall piece of rows
     s..e: every point of a body about it of bounding radius r then lies more than `reach` - r

@@ -91,7 +91,8 @@ def simulate_shots(hole: Hole, shots: Sequence[Shot], preset: Knobs | str = "bal
         contact_at: list[tuple[float, float] | None] = [None] * len(shots)
         index = {ent: k for k, (ent, _) in enumerate(rows)}
         balls, running = Selection(), np.ones(len(shots), dtype=np.bool_)
-        asleep, resting = np.zeros(len(shots), dtype=np.bool_), np.empty(len(shots), dtype=np.int64)  # came_to_rest's
+        # Each ball's rest as last seen, and room for the balls that came to rest since (`came_to_rest`).
+        asleep, resting = np.zeros(len(shots), dtype=np.bool_), np.empty(len(shots), dtype=np.int64)
         frames = 0
         sim.res.events.drain()
         while frames < round(max_seconds / FRAME_DT) and running.any():

@@ -119,7 +119,8 @@ def leaf_kernel(fn: F) -> F:
 def inlined_leaf(fn: F) -> F:
     """A leaf numba puts into each kernel that calls it rather than calling it: a small helper called
     once a body in a loop, where the call (every array passed is some ten machine words) would cost
-    more than its work."""
+    more than its work. Its code is then optimised again in every kernel that reaches it, so each
+    one lengthens the first launch's compile: inline what a measurement says pays for that."""
     if numba is None:
         return fn
     compiled = numba.njit(cache=True, nogil=True, _nrt=False, inline="always")(fn)

@@ -28,6 +28,7 @@ from polygolf.engine.physics.body import (
     X,
     Y,
 )
+from polygolf.engine.physics.geometry import norm
 from polygolf.engine.physics.jit import inlined_leaf, leaf_kernel, warm_up
 
 
@@ -137,10 +138,7 @@ def drag(state: np.ndarray, rows: np.ndarray, rates: np.ndarray, dt: float) -> N
         linear, angular, rolling, rolling_angular = rates[q, 0], rates[q, 1], rates[q, 2], rates[q, 3]
         if linear or rolling:
             vx, vy = state[k, VX], state[k, VY]
-            squares = vx * vx + vy * vy
-            # The root of the sum of squares: a few times cheaper than math.hypot, and as good
-            # where the squares are normal numbers (there, within about an ulp of it); elsewhere hypot.
-            speed = math.sqrt(squares) if 1e-290 < squares < math.inf else math.hypot(vx, vy)
+            speed = norm(vx, vy)
             if speed > 0.0:
                 rate = linear * scale
                 if rate != linear_rate and rate > 0.0:

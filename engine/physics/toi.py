@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, COLUMNS, INV_MASS, SPIN, VX, VY, X0, Y0, X, Y
-from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
+from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, norm, pose_piece
 from polygolf.engine.physics.grid import BoxGrid, FatBoxes, look_up_walls, walls_near
 from polygolf.engine.physics.jit import inlined_leaf, kernel, leaf_kernel, warm_up
 from polygolf.engine.physics.settings import GAP_TOLERANCE
@@ -211,12 +211,10 @@ def length_near(x: float, y: float, plus: float, more: float, bound: float, othe
     """hypot(x, y) + plus + more, for a caller that compares it with `bound` and `other` (the same
     twice for one bound): within a millionth of either, exactly that; elsewhere with the square root
     of the sum of squares in place of `math.hypot`, which is within a few ulps of it (the comparisons
-    come out the same) and costs several times less. (Not where the squares leave the normal range:
-    there the exact one.)"""
-    squares = x * x + y * y
-    value = math.sqrt(squares) + plus + more
-    if (abs(value - bound) > 1e-6 * abs(bound) and abs(value - other) > 1e-6 * abs(other)
-            and 1e-290 < squares < math.inf):
+    come out the same) and costs several times less (`geometry.norm`, which takes the exact one where
+    the squares leave the normal range)."""
+    value = norm(x, y) + plus + more
+    if abs(value - bound) > 1e-6 * abs(bound) and abs(value - other) > 1e-6 * abs(other):
         return value
     return math.hypot(x, y) + plus + more
 

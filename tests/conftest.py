@@ -14,10 +14,19 @@ SCENES = ROOT / "content" / "scenes"
 PRESET_NAMES = ("fast", "balanced", "accurate")
 
 
+def pytest_sessionstart(session: pytest.Session) -> None:
+    """Compile every physics kernel once, before any test: with pytest-xdist this runs in the
+    controller before it starts its workers, so they load the kernels from the cache rather than
+    each compiling them at once (and so do the processes tests start: workers, the command line)."""
+    if not hasattr(session.config, "workerinput"):
+        from polygolf.engine.physics.jit import compile_kernels
+
+        compile_kernels()
+
+
 @pytest.fixture(scope="session", autouse=True)
 def compiled_kernels() -> None:
-    """Compile (or load) every physics kernel once, first: the processes tests start later (workers,
-    the command line) then load them from the cache instead of each compiling them at once."""
+    """Load every kernel in this process (compiled by `pytest_sessionstart`)."""
     from polygolf.engine.physics.jit import compile_kernels
 
     compile_kernels()

@@ -442,7 +442,7 @@ def test_physics_tests_pass_with_the_kernels_interpreted():
     code = ("import sys, pytest\n"
             "from polygolf.engine.physics import jit\n"
             "assert not jit.COMPILED, 'NUMBA_DISABLE_JIT=1 should leave the kernels interpreted'\n"
-            f"sys.exit(pytest.main(['-p', 'no:cacheprovider', '--no-xvfb', *{INTERPRETED!r}]))\n")
+            f"sys.exit(pytest.main(['-p', 'no:cacheprovider', '--no-xvfb', '-n', '0', *{INTERPRETED!r}]))\n")
     started = time.perf_counter()
     result = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, env=env,
                             timeout=300)

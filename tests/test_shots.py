@@ -53,6 +53,22 @@ def test_each_shot_of_a_batch_ends_bit_for_bit_as_played_alone(courses, course, 
         assert (result.rest, result.holed, result.penalties) == (rest, holed, penalties)
 
 
+def test_a_ball_the_windmill_meets_ends_as_alone_beside_a_faster_ball(courses):
+    """The windmill's arm meets a slow ball at its tip while another ball of the batch crosses the
+    hole: the arm and the ball make the same impact as when the ball is alone. (With a second ball
+    the arm's row came first in the store, its pair was swept with A and B swapped, and the ball
+    ended 2·10⁻¹⁵ m away from where it ends alone.)"""
+    hole = find_course(courses, "hazards").holes[5]  # Windmill
+    outline, pivot, _ = hole.layout.windmills[0]
+    arm = max(math.hypot(x, y) for x, y in outline)
+    hexagon = ShapeSpec(regular=6, radius=1.0)
+    for angle in (7 * math.pi / 6, 4 * math.pi / 3, 3 * math.pi / 2):
+        start = (pivot[0] + arm * math.cos(angle), pivot[1] + arm * math.sin(angle))
+        nudge = Shot(start, (0.05 * math.cos(angle), 0.05 * math.sin(angle)))
+        result, _ = simulate_shots(hole, [nudge, Shot(hole.layout.tee, (3.0, 0.3))], "fast", shape=hexagon)
+        assert (result.rest, result.holed, result.penalties) == _alone(hole, hexagon, nudge, "fast")
+
+
 def test_a_planned_putt_drops_and_says_when(courses):
     hole = find_course(courses, "meadow").holes[0]  # Straight: the cup is in line with the tee
     origin, arrow = golfer_for(hole).plan(hole.layout.tee)

@@ -91,10 +91,16 @@ def _body_hits(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple) ->
     """Pairs of bodies whose swept boxes overlap and that move fast relative to each other: each
     one's earliest impact goes into the hits (by its index in the rows); a windmill's arm that would
     crush the ball it meets stalls too. Returns how many pairs hit."""
-    lv, ln, first, reach, body_first, rows, radius, thickness, _, _, _ = shapes
+    lv, ln, first, reach, body_first, rows, radius, thickness, _, ents, _ = shapes
     (wv, wn, wfirst, _, _), _, _, _, _, grid = walls
     seen, found, hits, _, _, _, meet = inputs
     pairs = body_pairs(state, rows, radius, TOI_TARGET, True, meet, True)
+    # A is the smaller entity, as in the contact table. The rows follow esper's sets, whose order
+    # changes with the other entities (with K balls the windmill's row came first): a pair's impact,
+    # rounded one way or the other, would then differ between a shot alone and the same shot among K.
+    for g in range(len(pairs)):
+        if ents[pairs[g, 0]] > ents[pairs[g, 1]]:
+            pairs[g, 0], pairs[g, 1] = pairs[g, 1], pairs[g, 0]
     arm_hits = np.empty(len(pairs))
     count = body_pair_hits(lv, ln, first, reach, body_first, pairs, state, rows, radius, thickness, meet, LINEAR_SLOP,
                            TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP, hits, arm_hits)

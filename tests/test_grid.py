@@ -11,8 +11,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from polygolf.engine.loading.scene import Scene, build_scene
-from polygolf.engine.physics.body import ASLEEP, COLUMNS, INV_MASS, X, Y
-from polygolf.engine.physics.grid import BoxGrid, FatBoxes, bodies_near, box_pairs, by_entity
+from polygolf.engine.physics.body import ASLEEP, COLUMNS, INV_MASS, SPIN, X0, Y0, X, Y
+from polygolf.engine.physics.grid import BoxGrid, FatBoxes, bodies_near, body_pairs, box_pairs, by_entity
 
 coord = st.floats(-3000, 3000, allow_nan=False)
 size = st.floats(0.01, 2000, allow_nan=False)
@@ -50,6 +50,27 @@ def test_queries_and_pairs_match_brute_force(items, queries, cell, active):
 def test_pairs_of_a_crowd_match_brute_force(items, active):
     """A crowd is paired through a grid of cells as large as its largest box, not by the sweep."""
     _check_box_pairs(items, active)
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.tuples(st.floats(-5, 5), st.floats(-5, 5), st.floats(-1, 1), st.floats(-1, 1), st.floats(0.1, 1.0),
+                          st.sampled_from(["awake", "asleep", "kinematic", "turning"])), min_size=1, max_size=60),
+       st.booleans())
+def test_pairs_with_a_kinematic_body_alone_are_those_of_every_pair(bodies, turning_is_active):
+    """`body_pairs` without the pairs of two dynamic bodies (continuous collision, when none of them
+    can step far) gives exactly the pairs of every pair that hold a kinematic and a dynamic body."""
+    state = np.zeros((len(bodies), len(COLUMNS)))
+    for k, (x, y, dx, dy, _, kind) in enumerate(bodies):
+        state[k, X0], state[k, Y0], state[k, X], state[k, Y] = x, y, x + dx, y + dy
+        state[k, INV_MASS] = 0.0 if kind in ("kinematic", "turning") else 1.0
+        state[k, ASLEEP] = kind == "asleep"
+        state[k, SPIN] = 2.0 if kind == "turning" else 0.0
+    rows, radius = np.arange(len(bodies)), np.array([b[4] for b in bodies])
+    dynamic = state[:, INV_MASS] != 0.0
+    for swept in (True, False):
+        every = body_pairs(state, rows, radius, 0.01, swept, True, turning_is_active, True).tolist()
+        alone = body_pairs(state, rows, radius, 0.01, swept, True, turning_is_active, False).tolist()
+        assert alone == [[i, j] for i, j in every if dynamic[i] != dynamic[j]]
 
 
 @settings(max_examples=60, deadline=None)

@@ -463,19 +463,21 @@ def box_pairs(boxes: np.ndarray, active: np.ndarray) -> np.ndarray:
 
 @kernel
 def body_pairs(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, grow: float, swept: bool, meet: bool,
-               turning_is_active: bool) -> np.ndarray:
+               turning_is_active: bool, dynamic_pairs: bool) -> np.ndarray:
     """Pairs (i, j) of `rows` of a `body.BodyStore` state whose boxes overlap: each body's box about
     its pose (or, `swept`, about its motion from the substep's start), its bounding radius plus
     `grow`. With `meet`, every pair of which one is active (awake and dynamic, or kinematic and
     moving; `turning_is_active`: a kinematic body that turns counts even when marked at rest), by
-    `box_pairs`; else only a kinematic body with an awake dynamic one (bodies that meet walls and
-    kinematic bodies only: K balls, no K² pairs). i < j, sorted."""
+    `box_pairs`, or with `dynamic_pairs` False only those with a kinematic body (for a caller that
+    knows no two dynamic bodies can need it: no search at all without a kinematic body); without
+    `meet`, only a kinematic body with an awake dynamic one (bodies that meet walls and kinematic
+    bodies only: K balls, no K² pairs). i < j, sorted."""
     n = len(rows)
-    if not meet:
+    if not (meet and dynamic_pairs):
         kinematic = 0
         for q in range(n):
             kinematic += state[rows[q], INV_MASS] == 0.0
-        if kinematic == 0:  # a fan of shots on a hole without windmills: no pair to look for
+        if kinematic == 0:  # a fan of shots on a hole without windmills, a pile: no pair to look for
             return np.zeros((0, 2), dtype=np.int64)
     boxes = np.empty((n, 4))
     active = np.zeros(n, dtype=np.bool_)
@@ -492,15 +494,17 @@ def body_pairs(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, grow: fl
             active[q] = moving[q] or (not dynamic and state[k, SPIN] != 0.0)
         else:
             active[q] = awake and (dynamic or state[k, VX] != 0.0 or state[k, VY] != 0.0 or state[k, SPIN] != 0.0)
-    if meet:
+    if meet and dynamic_pairs:
         return box_pairs(boxes, active)
+    # A kinematic body with each dynamic one: those `box_pairs` would give (one of the two active), or
+    # without `meet` those with an awake one.
     pairs = np.empty((16, 2), dtype=np.int64)
     count = 0
     for i in range(n):
         if state[rows[i], INV_MASS] != 0.0:
             continue
         for j in range(n):
-            if moving[j] and rows_overlap(boxes, i, j):
+            if state[rows[j], INV_MASS] != 0.0 and (moving[j] or (meet and active[i])) and rows_overlap(boxes, i, j):
                 pairs = _add_pair(pairs, count, i, j)
                 count += 1
     return _sorted_pairs(pairs, count, n)
@@ -572,4 +576,4 @@ def _warm() -> None:
     box_pairs(boxes, np.ones(3, dtype=np.bool_))
     by_entity(np.array([[1, 0]], dtype=np.int64), np.array([5, 3], dtype=np.int64))
     for meet in (True, False):
-        body_pairs(state, np.zeros(1, dtype=np.int64), np.ones(1), 0.01, meet, meet, meet)
+        body_pairs(state, np.zeros(1, dtype=np.int64), np.ones(1), 0.01, meet, meet, meet, meet)

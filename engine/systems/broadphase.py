@@ -57,5 +57,5 @@ def pick(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, input
     found, count = bodies_near(state, rows, radius, CONTACT_MARGIN, grid, fat_boxes, seen, scratch, near, first, found)
     pairs = no_pairs
     if several:
-        pairs = by_entity(body_pairs(state, rows, radius, CONTACT_MARGIN, False, meet, False), ents)
+        pairs = by_entity(body_pairs(state, rows, radius, CONTACT_MARGIN, False, meet, False, True), ents)
     return (ents[near[:count]], first[:count + 1], found[:first[count]], pairs), found

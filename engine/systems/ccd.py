@@ -1,3 +1,5 @@
+import math
+
 import esper
 import numpy as np
 
@@ -94,7 +96,8 @@ def _body_hits(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple) ->
     lv, ln, first, reach, body_first, rows, radius, thickness, _, ents, _ = shapes
     (wv, wn, wfirst, _, _), _, _, _, _, grid = walls
     seen, found, hits, _, _, _, meet = inputs
-    pairs = body_pairs(state, rows, radius, TOI_TARGET, True, meet, True)
+    pairs = body_pairs(state, rows, radius, TOI_TARGET, True, meet, True,
+                       meet and _dynamic_pairs_may_step_far(state, rows, radius, thickness))
     # A is the smaller entity, as in the contact table. The rows follow esper's sets, whose order
     # changes with the other entities (with K balls the windmill's row came first): a pair's impact,
     # rounded one way or the other, would then differ between a shot alone and the same shot among K.
@@ -115,6 +118,30 @@ def _body_hits(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple) ->
         if _pinched(lv, ln, first, body_first, state, rows, radius, arm, ball, hit, grid, seen, found, wv, wn, wfirst):
             hits[arm] = min(hits[arm], hit)
     return count
+
+
+@leaf_kernel
+def _dynamic_pairs_may_step_far(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, thickness: np.ndarray
+                                ) -> bool:
+    """Whether two dynamic bodies could step half the thinner one's width relative to each other,
+    as `toi.body_pair_hits` asks before it sweeps them: their relative step is at most the sum of
+    their steps (each its centre's |dx| + |dy| and its turn at its bounding radius), so not while
+    twice the longest step is below half the thinnest width (a pile's substep, as a rule: then no
+    pair of dynamic bodies is looked for at all). The margin covers the rounding of the steps'
+    differences, which grows with the coordinates."""
+    longest, thinnest, largest = 0.0, math.inf, 0.0
+    for q in range(len(rows)):
+        k = rows[q]
+        if state[k, INV_MASS] == 0.0:
+            continue
+        x, y, a, x0, y0, a0 = state[k, X], state[k, Y], state[k, ANGLE], state[k, X0], state[k, Y0], state[k, ANGLE0]
+        step = abs(x - x0) + abs(y - y0) + abs(a - a0) * radius[q]
+        if not math.isfinite(step):
+            return True
+        longest = max(longest, step)
+        thinnest = min(thinnest, thickness[q])
+        largest = max(largest, abs(x), abs(y), abs(x0), abs(y0), (abs(a) + abs(a0)) * radius[q])
+    return 4.0 * longest * (1.0 + 1e-9) + 1e-12 * largest >= thinnest
 
 
 @kernel

@@ -44,6 +44,67 @@ def test_grazing_a_corner_level_or_just_above_is_no_hit(preset, gap):
         assert (ball.vx, ball.vy, ball.spin) == pytest.approx((8.0, 0.0, 0.0), abs=1e-9)
 
 
+def _flat_bottomed(sides: int) -> float:
+    """The angle (degrees) that puts a face of a regular polygon at its bottom."""
+    return (270.0 - 180.0 / sides) % (360.0 / sides)
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+@pytest.mark.parametrize("sides", [3, 4, 5, 7, 8])
+@pytest.mark.parametrize("gap", [0.0, 0.0005, 0.004])
+def test_every_flat_bottomed_polygon_grazing_a_corner_is_no_hit(preset, sides, gap):
+    """As above for triangles to octagons. (A square level with the box was stopped 5 mm short of the
+    corner, then, counted as touching, stopped again with its vertex on the corner, where the
+    contact took the box's side for its normal and threw it back.)"""
+    radius = 0.35
+    scene = Scene.model_validate({
+        "name": "graze", "walls": [{"box": {"center": [1.0, -0.5], "half": [1.0, 0.5]}}],
+        "bodies": [{"name": "ball", "shape": {"regular": sides, "radius": radius}, "angle": _flat_bottomed(sides),
+                    "position": [-1.0, radius * math.cos(math.pi / sides) + gap], "velocity": [8.0, 0.0],
+                    "restitution": 0.6, "friction": 0.3}]})
+    with build_scene(scene, preset) as sim:
+        sim.run(1.0)
+        ball = sim.body("ball")
+        assert (ball.vx, ball.vy, ball.spin) == pytest.approx((8.0, 0.0, 0.0), abs=1e-9)
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+@pytest.mark.parametrize(("sides", "gap", "speed"), [(6, 0.001, 10.0), (6, 0.002, 25.0), (5, 0.002, 20.0),
+                                                     (3, 0.001, 25.0), (6, 0.001, 1000.0)])
+def test_a_ball_passing_just_above_a_diamond_s_top_corner_is_untouched(preset, sides, gap, speed):
+    """A flat-bottomed ball a millimetre or two above a box turned 45°, at up to the fastest shot and
+    far beyond. (The gap test's advancement crept along by the general bound, a step of about the
+    gap a time, and ran out of steps: counted as an impact, it struck the ball off the corner.)"""
+    radius = 0.35
+    corner = 0.5 * math.sqrt(2.0)
+    scene = Scene.model_validate({
+        "name": "diamond", "walls": [{"box": {"center": [0.0, 0.0], "half": [0.5, 0.5], "angle": 45}}],
+        "bodies": [{"name": "ball", "shape": {"regular": sides, "radius": radius}, "angle": _flat_bottomed(sides),
+                    "position": [-3.0, corner + radius * math.cos(math.pi / sides) + gap],
+                    "velocity": [speed, 0.0], "restitution": 0.6, "friction": 0.3}]})
+    with build_scene(scene, preset) as sim:
+        sim.run(0.5)
+        ball = sim.body("ball")
+        assert ball.x > 1.0  # past the corner
+        assert (ball.vx, ball.vy, ball.spin) == pytest.approx((speed, 0.0, 0.0), abs=1e-9)
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+@pytest.mark.parametrize("spin", [30.0, -30.0, 200.0])
+def test_a_spinning_star_whose_tips_pass_a_millimetre_above_a_floor_is_untouched(preset, spin):
+    """A star {5/2} at the fastest shot's spin (and far beyond) skimming a floor. (Its turn bounds how
+    fast a tip can close on the floor, a step of a few hundredths of the substep each: the steps ran
+    out before the substep did, and the floor struck it.)"""
+    scene = Scene.model_validate({
+        "name": "spin", "walls": [{"box": {"center": [0.0, -0.5], "half": [1000.0, 0.5]}}],
+        "bodies": [{"name": "ball", "shape": {"star": [5, 2], "radius": 0.5}, "position": [0.0, 0.501],
+                    "velocity": [10.0, 0.0], "spin": spin, "restitution": 0.6, "friction": 0.3}]})
+    with build_scene(scene, preset) as sim:
+        sim.run(0.5)
+        ball = sim.body("ball")
+        assert (ball.vx, ball.vy, ball.spin) == pytest.approx((10.0, 0.0, spin), abs=1e-9)
+
+
 @pytest.mark.parametrize("preset", PRESET_NAMES)
 def test_a_frictionless_slide_across_flush_boxes_keeps_its_speed(preset):
     with scene_sim("seam-slide", preset) as sim:

@@ -120,7 +120,7 @@ def test_estimated_par_is_the_median_plus_a_human_stroke() -> None:
 @pytest.mark.parametrize("name", sorted(HOLES))
 def test_every_shipped_hole_is_sunk_and_its_par_is_within_one(name: str) -> None:
     hole = HOLES[name]
-    proof = prove_hole(hole, shapes=[HEXAGON], effort="quick", knobs="fast")
+    proof = prove_hole(hole, shapes=[HEXAGON], effort="normal", knobs="fast")
     assert proof.sunk, f"{name}: not sunk in {hole.library.max_strokes} strokes"
     assert abs(proof.estimated_par - hole.spec.par) <= 1, f"{name}: par {hole.spec.par}, estimate {proof.estimated_par}"
 

@@ -3,9 +3,12 @@ by conservative advancement.
 
 Mirtich's conservative advancement: at time t the separating-axis distance d is a lower bound on the
 true distance, and no point of the piece can close it faster than a bound mu, so the piece may safely
-advance by (d - target)/mu. Fixed axes (the wall's face normals) get the sharper bound
-max(0, -n.v) + |w|·R, which makes a head-on approach converge in one or two steps. The piece moves
-linearly in position and angle over the substep, which is exactly what the integrator did.
+advance by (d - target)/mu. Each axis gets its own bound, the pieces' relative speed along it plus
+what turning adds, max(0, -n.v) + |w|·R: a fixed axis (a wall's face) once, an axis that turns with
+its piece as it points at each step (held fixed from then on, it still separates the two pieces'
+projections, so it still bounds the distance from below). A head-on approach converges in one or two
+steps, and pieces that pass each other or part are let go at once. The piece moves linearly in
+position and angle over the substep, which is exactly what the integrator did.
 
 Pieces are row ranges of `geometry.ConvexSet` arrays: a body's in its own frame (turned about its
 origin), a wall's in world coordinates. A kernel returns the fraction of the motion, or NO_HIT.
@@ -72,31 +75,65 @@ def _separations(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, xa: float, 
     return best
 
 
+@inlined_leaf
+def _turning_rates(pa_n: np.ndarray, pb_n: np.ndarray, na_: int, nb_: int, d_x: float, d_y: float, turns: float,
+                   b_posed: bool, rates: np.ndarray) -> None:
+    """The rates of the axes that turn (A's faces; B's too unless B is a wall, whose own rates stay
+    as the caller set them), from the faces' normals as posed now: an axis held fixed from now on
+    still bounds the distance from below (it separates the two projections), and it closes no faster
+    than the pieces' relative step along it, d·n (d = (d_x, d_y), A's step less B's), plus what
+    turning adds (`turns`, each piece's turn at its bounding radius). Never more than the general
+    bound |d| + turns, and far less for pieces that pass each other or part."""
+    if b_posed:  # B's faces first, fixed (the wall's own rates)
+        for i in range(na_):
+            rates[nb_ + i] = max(0.0, pa_n[i, 0] * d_x + pa_n[i, 1] * d_y) + turns
+    else:
+        for i in range(na_):
+            rates[i] = max(0.0, pa_n[i, 0] * d_x + pa_n[i, 1] * d_y) + turns
+        for i in range(nb_):
+            rates[na_ + i] = max(0.0, -(pb_n[i, 0] * d_x + pb_n[i, 1] * d_y)) + turns
+
+
 @leaf_kernel
 def _advance(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, start_a: np.ndarray, end_a: np.ndarray,
              lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, start_b: np.ndarray, end_b: np.ndarray,
-             b_posed: bool, rates: np.ndarray, target: float, tolerance: float, allowance: float,
+             b_posed: bool, rates: np.ndarray, turns: float, target: float, tolerance: float, allowance: float,
              at_start: np.ndarray, measured: bool, work: tuple) -> float:
     """Conservative advancement over t in [0, 1]: the first t at which the separating-axis distance
     comes within `target` (see time_of_impact for `allowance`), or NO_HIT. Axes: B's faces first
-    when B is a wall, else A's. `at_start`: the separations at t = 0 if already `measured`.
-    `work`: scratch (`toi_work`)."""
+    when B is a wall (their rates given in `rates`), else A's. The axes that turn get their rates
+    from where they point at each step (`_turning_rates`; `turns`: the bound on what the pieces'
+    turning adds). `at_start`: the separations at t = 0 if already `measured` (the pieces are then
+    posed again, for their normals). `work`: scratch (`toi_work`).
+
+    Should MAX_ITERATIONS steps not decide it (a fast spin beside a face, say), a sweep that stops
+    bodies short of walls (`target` > 0) is given the t reached, where the body is still safely
+    apart; a question whether the pieces would press into each other (`target` <= 0: the gap tests)
+    is answered no: the contact is then made a substep later if they do, and a ball passing a
+    corner is not struck by a step count."""
     na_, nb_ = ea - sa, eb - sb
     posed, seps = work[0], work[1]
     pa_v, pa_n, pb_v, pb_n = posed[0], posed[1], posed[2], posed[3]
+    d_x = end_a[0] - start_a[0] - (end_b[0] - start_b[0])
+    d_y = end_a[1] - start_a[1] - (end_b[1] - start_b[1])
     if measured:
         worst = -1e300
         for k in range(na_ + nb_):
             seps[k] = at_start[k]
             if seps[k] > worst:
                 worst = seps[k]
+        pose_piece(lva, lna, sa, ea, start_a[0], start_a[1], start_a[2], pa_v, pa_n)
+        if not b_posed:
+            pose_piece(lvb, lnb, sb, eb, start_b[0], start_b[1], start_b[2], pb_v, pb_n)
     else:
         worst = _separations(lva, lna, sa, ea, start_a[0], start_a[1], start_a[2], lvb, lnb, sb, eb,
                              start_b[0], start_b[1], start_b[2], b_posed, pa_v, pa_n, pb_v, pb_n, b_posed, seps)
-    # Already touching (sliding along the wall, say): only sinking `allowance` deeper counts.
-    level = target if worst >= target + tolerance else min(worst, target) - allowance
+    # Already within `target` (sliding along the wall, or stopped there by the last impact): only
+    # sinking `allowance` into it (deeper than it already is, if in it) counts, never just touching it.
+    level = target if worst >= target + tolerance else min(worst, target, 0.0) - allowance
     t = 0.0
     for _ in range(MAX_ITERATIONS):
+        _turning_rates(pa_n, pb_n, na_, nb_, d_x, d_y, turns, b_posed, rates)
         # Any axis gives a safe step: its separation cannot fall to `level` sooner than this.
         step = -math.inf
         for k in range(na_ + nb_):
@@ -117,7 +154,7 @@ def _advance(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, start_a: np.nda
                              b_posed, pa_v, pa_n, pb_v, pb_n, b_posed, seps)
         if worst < level + tolerance:
             return t
-    return t
+    return t if target > 0.0 else NO_HIT
 
 
 _NOWHERE = np.zeros(3)
@@ -170,9 +207,11 @@ def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float,
     first comes within `target` of the wall piece (rows ws..we, world), or NO_HIT.
 
     `reach` is the largest distance of the piece's vertices from the body origin. A piece already
-    touching at the start (sliding along the wall, say) is stopped only if it would sink `allowance`
-    deeper than it already is: a corner swinging into the wall while another rests on it is caught,
-    but sliding is not interrupted. `work`: scratch (`toi_work`)."""
+    within `target` at the start (sliding along the wall, or stopped there by an impact the substep
+    before) is stopped only if it would sink `allowance` into it (deeper than it already is, if in
+    it): a corner swinging into the wall while another rests on it is caught, but sliding is not
+    interrupted, nor is a piece stopped for touching a corner it passes level with a face (its
+    vertex at the corner, the contact's normal could be either face's). `work`: scratch (`toi_work`)."""
     dx, dy, da = end[0] - start[0], end[1] - start[1], end[2] - start[2]
     turn = abs(da) * reach  # largest distance any vertex moves by rotation over the whole motion
     general_rate = math.hypot(dx, dy) + turn
@@ -181,11 +220,9 @@ def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float,
     rates = work[2]
     if wall_out_of_reach(reach, start, end, wv, wn, ws, we, target, tolerance, rates):
         return NO_HIT
-    # The piece's own faces turn with it, so only the general bound holds for them.
-    for k in range(we - ws, we - ws + e - s):
-        rates[k] = general_rate
-    return _advance(lv, ln, s, e, start, end, wv, wn, ws, we, _NOWHERE, _NOWHERE, True, rates, target, tolerance,
-                    allowance, rates, False, work)
+    # The piece's own faces turn with it: the advancement gives them their rates as they point.
+    return _advance(lv, ln, s, e, start, end, wv, wn, ws, we, _NOWHERE, _NOWHERE, True, rates, turn, target,
+                    tolerance, allowance, rates, False, work)
 
 
 @leaf_kernel
@@ -193,16 +230,15 @@ def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reac
                         end_a: np.ndarray, lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, reach_b: float,
                         start_b: np.ndarray, end_b: np.ndarray, target: float, tolerance: float, allowance: float,
                         at_start: np.ndarray, measured: bool, work: tuple) -> float:
-    """The same for two pieces that both move (two bodies): every axis turns with its body, so every
-    axis takes the bound on their relative motion, |dA - dB| + |ΔθA|·RA + |ΔθB|·RB. `at_start`: the
-    separations at the start poses, if already `measured`."""
-    rate = (math.hypot(end_a[0] - start_a[0] - end_b[0] + start_b[0], end_a[1] - start_a[1] - end_b[1] + start_b[1])
-            + abs(end_a[2] - start_a[2]) * reach_a + abs(end_b[2] - start_b[2]) * reach_b)
+    """The same for two pieces that both move (two bodies): every axis turns with its body, and takes
+    the relative step along it, (dA - dB)·n, plus |ΔθA|·RA + |ΔθB|·RB (`_turning_rates`).
+    `at_start`: the separations at the start poses, if already `measured`."""
+    turns = abs(end_a[2] - start_a[2]) * reach_a + abs(end_b[2] - start_b[2]) * reach_b
+    rate = math.hypot(end_a[0] - start_a[0] - end_b[0] + start_b[0],
+                      end_a[1] - start_a[1] - end_b[1] + start_b[1]) + turns
     if rate <= 0.0:
         return NO_HIT
-    rates = work[2]
-    rates[:ea - sa + eb - sb] = rate
-    return _advance(lva, lna, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b, end_b, False, rates, target,
+    return _advance(lva, lna, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b, end_b, False, work[2], turns, target,
                     tolerance, allowance, at_start, measured, work)
 
 

@@ -136,6 +136,15 @@ def test_unreachable_cup_is_refused(tmp_path):
     assert (info.value.line, info.value.field) == (7, "tiles[3]")  # the cup tile
 
 
+def test_a_windmill_turning_off_the_green_is_refused_in_one_line(tmp_path):
+    path = write_hole(tmp_path, GOOD.replace("open-w}", "open-w, pattern: mill-out}"))
+    with (tmp_path / "tiles.yaml").open("a") as tiles:
+        tiles.write("  mill-out:\n    - {hazard: windmill, speed: 1.0, box: {center: [3.5, 0], half: [0.3, 0.1]}}\n")
+    with pytest.raises(ContentError, match="windmill of pattern 'mill-out' turns about .* off the green") as info:
+        load_hole(path, load_library(tmp_path / "tiles.yaml"))
+    assert (info.value.line, info.value.field) == (5, "tiles[1].pattern")
+
+
 def test_a_broken_hole_leaves_the_rest_of_the_course_playable(tmp_path):
     write_hole(tmp_path, GOOD, "good.yaml")
     write_hole(tmp_path, GOOD.replace("open-w}", "open-x}"), "bad.yaml")

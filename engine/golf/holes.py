@@ -56,16 +56,23 @@ def _check_tee_and_cup(parsed: ParsedHole, layout: HoleLayout, library: TileLibr
 
 
 def _check_windmill_room(parsed: ParsedHole, layout: HoleLayout, library: TileLibrary) -> None:
-    """A windmill's sweep must leave the ball room to pass every wall: a narrower gap would crush a
-    ball between arm and wall (a kinematic arm cannot be pushed back)."""
+    """A windmill must turn about a point on the green, and its sweep must leave the ball room to pass
+    every wall: a narrower gap would crush a ball between arm and wall (a kinematic arm cannot be pushed
+    back)."""
     room = 2.0 * library.ball.radius + 2.0 * LINEAR_SLOP
-    for outline, (px, py), _ in layout.windmills:
+    tiles = parsed.spec.tiles
+    # The tile each windmill came from: `layout_hole` lays them out tile by tile, pattern item by item.
+    owners = [i for i, tile in enumerate(tiles) for item in library.patterns[tile.pattern] if item.hazard == "windmill"]
+    for owner, (outline, (px, py), _) in zip(owners, layout.windmills, strict=True):
+        loc = ("tiles", owner, "pattern")
+        if not any(x0 <= px <= x1 and y0 <= py <= y1 for x0, y0, x1, y1 in layout.floor):
+            raise parsed.error(loc, f"a windmill of pattern '{tiles[owner].pattern}' turns about "
+                                    f"({px:.2f}, {py:.2f}) m, off the green: its centre must be on a tile")
         gap = point_clearance(layout, px, py) - bounding_radius(outline)
         if gap < room:
-            tile = next(i for i, (x0, y0, x1, y1) in enumerate(layout.floor) if x0 <= px <= x1 and y0 <= py <= y1)
-            raise parsed.error(("tiles", tile, "pattern"),
-                               f"a windmill's sweep comes within {max(gap, 0.0):.2f} m of a wall: the ball "
-                               f"({2 * library.ball.radius:g} m across) needs {room:.2f} m to pass, not to be crushed")
+            raise parsed.error(loc, f"a windmill's sweep comes within {max(gap, 0.0):.2f} m of a wall: the ball "
+                                    f"({2 * library.ball.radius:g} m across) needs {room:.2f} m to pass, not to be "
+                                    "crushed")
 
 
 @dataclass(slots=True)

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import re
 import shutil
 import signal
@@ -130,6 +131,8 @@ CASES = [
     ("courses-no-name", "courses", "courses:\n  - holes: [case]\n", 2, "courses[0].name", "missing"),
     ("courses-empty-name", "courses", "courses:\n  - name: ''\n    holes: [case]\n", 2, "courses[0].name",
      "at least 1"),
+    ("courses-newline-name", "courses", COURSES.replace("Case", '"Line\\nBreak"'), 2, "courses[0].name",
+     "control characters, got U+000A"),
     ("courses-nul", "courses", COURSES.encode().replace(b"Case", b"C\x00"), 2, "(file)", "control character"),
     # --- themes ------------------------------------------------------------------------------
     ("theme-bad-colour", "theme", _sub(THEME, '"#4f9d4a"', '"green"'), 5, "green", 'a colour is "#RRGGBB"'),
@@ -285,6 +288,20 @@ def test_simulate_json_is_strict_json_even_when_the_numbers_are_not(tmp_path, ca
     text = capsys.readouterr().out
     report = json.loads(text, parse_constant=lambda name: pytest.fail(f"{name} in the JSON"))
     assert report["bodies"][0]["position"][0] < 0
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="FIFOs and /dev/zero are POSIX")
+def test_a_pipe_or_a_device_is_refused_unread_in_one_line(tmp_path, capsys):
+    """A FIFO would wait for a writer for ever and /dev/zero never ends (both say size 0)."""
+    fifo = tmp_path / "pipe.yaml"
+    os.mkfifo(fifo)
+    for args, status in ((["simulate", str(fifo)], 2), (["validate", str(fifo)], 1), (["simulate", "/dev/zero"], 2),
+                         (["validate", "/dev/zero"], 1), (["replay", "--verify", "/dev/zero"], 2)):
+        with deadline(10):
+            code = main(args)
+        err = capsys.readouterr().err.strip().splitlines()
+        assert code == status and len(err) == 1, (args, err)
+        assert args[-1] in err[0] and "not a regular file" in err[0], err[0]
 
 
 @pytest.fixture

@@ -4,16 +4,19 @@ Content files are parsed to plain data plus a map from each value's path (("bodi
 to its line, then validated with pydantic; every error becomes `file:line: field: message`, which is
 all an author needs to fix it.
 
-Nothing a file says gets past this module as anything but a ContentError: the size is checked before
-reading, the text must be UTF-8 without control characters, the event stream is checked for depth
-and size before anything is built (so no recursion runs deep), aliases are expanded against a budget
-(no "billion laughs") and may not refer to themselves, and only YAML's standard tags are accepted.
+Nothing a file says gets past this module as anything but a ContentError: only a regular file is read,
+and no more of it than the size limit, the text must be UTF-8 without control characters, the event
+stream is checked for depth and size before anything is built (so no recursion runs deep), aliases are
+expanded against a budget (no "billion laughs") and may not refer to themselves, and only YAML's
+standard tags are accepted.
 """
 
 from __future__ import annotations
 
+import errno
 import os
 import re
+import stat
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any, TypeVar
@@ -127,17 +130,37 @@ def _check_events(text: str, file: str) -> None:
             raise ContentError(file, event.start_mark.line + 1, "(yaml)", f"more than {MAX_NODES:,} values")
 
 
+_NOT_REGULAR = ((stat.S_ISDIR, "a folder"), (stat.S_ISFIFO, "a pipe (FIFO)"), (stat.S_ISSOCK, "a socket"))
+
+
+def read_at_most(path: str | Path, limit: int) -> bytes:
+    """A regular file's bytes, at most `limit` + 1 of them: more than `limit` means too large, whatever
+    its size said (a file can grow while it is read). Anything else is refused before a byte is read: a
+    FIFO would wait for a writer for ever and a device such as /dev/zero never ends (its size says 0).
+    Raises OSError, whose strerror says why in a few words."""
+    # Non-blocking, so opening a FIFO returns at once rather than waiting for a writer.
+    fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_BINARY", 0))
+    try:
+        mode = os.fstat(fd).st_mode
+        if not stat.S_ISREG(mode):
+            kind = next((name for is_kind, name in _NOT_REGULAR if is_kind(mode)), "a device")
+            raise OSError(errno.EINVAL, f"not a regular file but {kind}")
+        with open(fd, "rb", closefd=False) as file:
+            return file.read(limit + 1)
+    finally:
+        os.close(fd)
+
+
 def read_text(path: str | Path) -> str:
     """A content file's text: at most MAX_FILE_BYTES of UTF-8 without control characters."""
     file = str(path)
     try:
-        size = os.stat(path).st_size
-        if size > MAX_FILE_BYTES:
-            raise ContentError(file, 0, "(file)", f"{size:,} bytes: content files are at most "
-                                                  f"{MAX_FILE_BYTES // 1024} KiB")
-        data = Path(path).read_bytes()
+        data = read_at_most(path, MAX_FILE_BYTES)
     except OSError as exc:
         raise ContentError(file, 0, "(file)", exc.strerror or str(exc)) from None
+    if len(data) > MAX_FILE_BYTES:
+        raise ContentError(file, 0, "(file)", f"more than {MAX_FILE_BYTES:,} bytes: content files are at most "
+                                              f"{MAX_FILE_BYTES // 1024} KiB")
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:

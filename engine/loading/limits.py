@@ -6,6 +6,7 @@ most MAX_TOTAL_VERTICES of them (a few seconds at worst) — and every world fin
 from __future__ import annotations
 
 import re
+import unicodedata
 from typing import Annotated
 
 from pydantic import AfterValidator, Field, Strict, StringConstraints
@@ -64,7 +65,7 @@ LIMITS: list[tuple[str, str]] = [
     ("drag rates (linear, angular, rolling)", f"0 – {MAX_DRAG:,.0f}"),
     ("gravity components", f"|g| ≤ {MAX_GRAVITY:,.0f} m/s²"),
     ("bodies, walls in a scene", f"1 – {MAX_BODIES:,}, ≤ {MAX_WALLS:,}"),
-    ("names", f"1 – {MAX_NAME} characters"),
+    ("names", f"1 – {MAX_NAME} characters, no control characters (one line on the HUD, the scorecard and in messages)"),
     ("tile size", f"{MIN_TILE:g} – {MAX_TILE:g} m; wall thickness, ball and cup radius ≤ a quarter of it"),
     ("tile positions `at`", f"|column|, |row| ≤ {MAX_TILE_INDEX}; ≤ {MAX_TILES} tiles a hole"),
     ("pattern items; border sets, patterns, courses, holes a course", f"≤ {MAX_ITEMS}; ≤ {MAX_ENTRIES}"),
@@ -99,7 +100,18 @@ Restitution = finite(0.0, 1.0)
 Friction = finite(0.0, MAX_FRICTION)
 Rate = finite(0.0, MAX_DRAG)
 Acceleration = finite(-MAX_GRAVITY, MAX_GRAVITY)
-Name = Annotated[str, StringConstraints(min_length=1, max_length=MAX_NAME)]
+
+
+def _one_line(name: str) -> str:
+    """A name is shown on one line (HUD, scorecard, console, error messages): a control character
+    would break it."""
+    bad = next((c for c in name if unicodedata.category(c) in ("Cc", "Zl", "Zp")), None)
+    if bad is not None:
+        raise ValueError(f"a name may not hold control characters, got U+{ord(bad):04X}")
+    return name
+
+
+Name = Annotated[str, StringConstraints(min_length=1, max_length=MAX_NAME), AfterValidator(_one_line)]
 Seed = count(0, 2**63 - 1)
 
 

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import hashlib
 import json
+import math
+import re
 from pathlib import Path
 from typing import Annotated, Literal
 
@@ -16,10 +18,13 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from polygolf.engine.golf.holes import Course, Hole
 from polygolf.engine.loading.scene import ShapeSpec
+from polygolf.engine.loading.yamlsource import read_at_most
 
 FORMAT = "polygolf-replay"
 FORMAT_VERSION = 1
 MAX_REPLAY_BYTES = 16 * 1024 * 1024
+MAX_FILE_COURSE = 60  # characters of the course id in a replay's file name
+MAX_INT_DIGITS = 20  # with a sign: every count in a replay is far smaller
 MAX_HOLE_FRAMES = 60 * 60 * 60  # an hour of play on one hole: more is not a round, and would take long to check
 Frame = Annotated[int, Field(ge=0, le=MAX_HOLE_FRAMES)]
 
@@ -80,30 +85,62 @@ class RoundRecord(_Strict):
 
     def save(self, folder: Path) -> Path:
         """Write the record as `folder/<recorded_at>-<course>.json` (atomically: a temporary file
-        renamed), and return the path."""
+        renamed), and return the path. The course id is made safe for a file name (a course's name
+        may hold '/' or be long), so no round is lost for its name; the file itself says the course."""
         folder.mkdir(parents=True, exist_ok=True)
-        stamp = self.recorded_at.replace(":", "").replace("-", "")
-        path = folder / f"{stamp}-{self.course}.json"
+        stamp = re.sub(r"[^A-Za-z0-9_-]+", "_", self.recorded_at.replace(":", "").replace("-", ""))
+        course = re.sub(r"[^A-Za-z0-9_-]+", "_", self.course)[:MAX_FILE_COURSE] or "_"
+        path = folder / f"{stamp}-{course}.json"
         n = 1
         while path.exists():
             n += 1
-            path = folder / f"{stamp}-{self.course}-{n}.json"
+            path = folder / f"{stamp}-{course}-{n}.json"
         tmp = path.with_suffix(".tmp")
         tmp.write_text(json.dumps(self.model_dump(mode="json"), indent=1))
         tmp.replace(path)
         return path
 
 
+class _NotAReplayNumber(ValueError):
+    """A number no replay holds: NaN, an infinity, or an integer too long to be a count."""
+
+
+def _refuse_constant(name: str) -> float:
+    raise _NotAReplayNumber(f"{name} is not a number JSON allows")
+
+
+def _finite_float(text: str) -> float:
+    value = float(text)
+    if not math.isfinite(value):
+        raise _NotAReplayNumber(f"{text[:20]} is out of range")
+    return value
+
+
+def _short_int(text: str) -> int:
+    """Checked before converting: past 4,300 digits int() raises an error that names no file, and a
+    long one is slow to convert."""
+    if len(text) > MAX_INT_DIGITS:
+        raise _NotAReplayNumber(f"an integer of {len(text):,} digits")
+    return int(text)
+
+
 def load_record(path: Path) -> RoundRecord:
     """A replay file, checked; anything wrong is a ReplayError of one line."""
     try:
-        if path.stat().st_size > MAX_REPLAY_BYTES:
-            raise ReplayError(f"{path}: larger than {MAX_REPLAY_BYTES // 1024 // 1024} MiB: not a replay")
-        data = json.loads(path.read_bytes().decode("utf-8"))
+        raw = read_at_most(path, MAX_REPLAY_BYTES)
     except OSError as exc:
         raise ReplayError(f"{path}: cannot read: {exc.strerror or exc}") from None
+    if len(raw) > MAX_REPLAY_BYTES:
+        raise ReplayError(f"{path}: larger than {MAX_REPLAY_BYTES // 1024 // 1024} MiB: not a replay")
+    try:
+        data = json.loads(raw.decode("utf-8"), parse_constant=_refuse_constant, parse_float=_finite_float,
+                          parse_int=_short_int)
     except (UnicodeDecodeError, json.JSONDecodeError) as exc:
         raise ReplayError(f"{path}: not a replay (not JSON: {exc})") from None
+    except RecursionError:
+        raise ReplayError(f"{path}: not a replay (nested too deeply)") from None
+    except _NotAReplayNumber as exc:
+        raise ReplayError(f"{path}: not a replay ({exc})") from None
     if not isinstance(data, dict) or data.get("format") != FORMAT:
         raise ReplayError(f"{path}: not a replay (no \"format\": \"{FORMAT}\")")
     try:

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import sqlite3
 
 import esper
@@ -18,7 +19,7 @@ from polygolf.engine.golf.layout import ball_fits
 from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.loading.paths import data_dir
 from polygolf.game.cli import main
-from polygolf.game.record import load_record
+from polygolf.game.record import RoundRecord, load_record
 from polygolf.game.replay import verify
 from polygolf.game.session import Game, Round, RoundPlay, par_text, penalty_text, strokes_text
 from polygolf.game.shapes import CATALOGUE
@@ -210,6 +211,31 @@ def test_a_tampered_replay_fails_verify_and_a_broken_one_is_refused(tmp_path, ca
         err = capsys.readouterr().err.strip().splitlines()
         assert len(err) == 1 and str(tampered) in err[0] and "Traceback" not in err[0]
     assert main(["replay", str(tmp_path / "missing.json")]) == 2
+
+
+@pytest.mark.parametrize("text", ["[" * 100_000, '{"format": "polygolf-replay", "version": NaN}',
+                                  '{"format": "polygolf-replay", "start_at": -Infinity}',
+                                  '{"format": "polygolf-replay", "holes": [{"frames": 1e999}]}',
+                                  '{"format": "polygolf-replay", "start_at": ' + "9" * 5000 + "}"],
+                         ids=["deep", "nan", "infinity", "overflow", "long-integer"])
+def test_a_replay_of_json_no_round_holds_is_not_a_replay(tmp_path, capsys, text):
+    path = tmp_path / "odd.json"
+    path.write_text(text)
+    assert main(["replay", str(path), "--verify"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(f"polygolf: {path}: not a replay ("), err
+
+
+def test_a_replay_is_saved_whatever_its_course_is_called(tmp_path):
+    """A course id is its name: '/' or a long name must not cost the round its replay file."""
+    saved = []
+    for course in ("fun/games", "fun/games", "⛳" * 100, "../.."):
+        record = RoundRecord(recorded_at="2026-11-26T14:50:44", course=course, course_name=course, fingerprint="f",
+                             shape_label="Pentagon", shape=PENTAGON, preset="fast", players=["Ann"])
+        saved.append(record.save(tmp_path / "replays"))
+    assert len(set(saved)) == 4 and all(path.parent == tmp_path / "replays" for path in saved)
+    assert all(len(path.name.encode()) < 100 and re.fullmatch(r"[\w-]+\.json", path.name, re.ASCII) for path in saved)
+    assert load_record(saved[2]).course == "⛳" * 100
 
 
 @pytest.mark.parametrize("args", [["--players", "5"], ["--players", "two"], ["--players", "0"],

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -17,9 +18,20 @@ class NoDisplay(RuntimeError):
     """No screen to open a window on; str() says what to do instead."""
 
 
+def _headless() -> bool:
+    """Whether arcade is offscreen only: it reads ARCADE_HEADLESS once, when it is imported (`render`
+    sets it for itself, and it stays set in that process)."""
+    arcade = sys.modules.get("arcade")
+    return bool(getattr(arcade, "headless", None) if arcade is not None else os.environ.get("ARCADE_HEADLESS"))
+
+
 def _check_display() -> None:
-    if os.name == "posix" and not os.environ.get("DISPLAY") and not os.environ.get("WAYLAND_DISPLAY") \
-            and not os.environ.get("ARCADE_HEADLESS"):
+    """Before arcade's GUI is imported: it needs a real display, and offscreen (ARCADE_HEADLESS, for
+    `render`) it cannot even be imported; either would be a traceback, not this line."""
+    if _headless():
+        raise NoDisplay("no display for a game window under ARCADE_HEADLESS (it is for drawing offscreen); "
+                        "unset it, or draw a hole to a file with `polygolf render`")
+    if os.name == "posix" and not os.environ.get("DISPLAY") and not os.environ.get("WAYLAND_DISPLAY"):
         raise NoDisplay("no display to open a window on (DISPLAY is not set); run it under a desktop or "
                         "xvfb-run, or draw a hole to a file with `polygolf render`")
 
@@ -49,6 +61,7 @@ class StillFrame:
 
 
 def run_menu() -> None:
+    _check_display()
     from polygolf.game.flow import ScreenFlow
     from polygolf.game.session import Game
 
@@ -112,10 +125,9 @@ def build_nine_here(seed: int):
 
 def run_play(course: str, hole: int, theme: str | None, shape: str | None, preset: str,
              players: list[str] | None = None, seed: int | None = None) -> None:
+    _check_display()  # before arcade.gui is imported, and before random-nine's minutes of building
     from polygolf.game.flow import ScreenFlow
 
-    if course == "random-nine":
-        _check_display()  # before minutes of building, not after
     game = _game_for(course, hole, theme, shape, players=players, seed=seed)
     game.preset = preset
     game.guide_seen = True
@@ -126,6 +138,7 @@ def run_play(course: str, hole: int, theme: str | None, shape: str | None, prese
 
 def run_hole_file(path: Path, theme: str | None, shape, preset: str, watch: bool) -> None:
     """Play one hole file straight away; with `watch`, it is built again each time it is saved."""
+    _check_display()
     from polygolf.engine.golf.holes import Course, load_hole_file
     from polygolf.game.flow import ScreenFlow
 
@@ -153,6 +166,7 @@ def run_hole_file(path: Path, theme: str | None, shape, preset: str, watch: bool
 
 def run_replay(path: Path) -> None:
     """Show a recorded round in a window, hole by hole, then its scorecard."""
+    _check_display()
     from polygolf.game.flow import ScreenFlow
     from polygolf.game.replay import load_for_replay, replay_session
     from polygolf.game.session import Game

@@ -30,6 +30,17 @@ def test_window_commands_without_a_display_say_so_in_one_line():
         assert len(lines) == 1 and "no display" in lines[0] and "Traceback" not in result.stderr
 
 
+def test_window_commands_under_arcade_headless_say_so_in_one_line_and_render_still_works(tmp_path):
+    """ARCADE_HEADLESS is `render`'s offscreen context: the game's GUI cannot even be imported under it."""
+    for display in ({}, {"DISPLAY": ":0"}):
+        result = run("play", "--course", "meadow", env_changes={"ARCADE_HEADLESS": "1", **display})
+        lines = result.stderr.strip().splitlines()
+        assert result.returncode == 1 and len(lines) == 1 and "no display" in lines[0], result.stderr
+    out = tmp_path / "x.png"
+    result = run("render", "meadow", "1", "--out", str(out), env_changes={"ARCADE_HEADLESS": "1"})
+    assert result.returncode == 0 and out.stat().st_size > 10_000, result.stderr
+
+
 def test_render_draws_a_hole_to_png_without_a_window(tmp_path):
     out = tmp_path / "dog-leg.png"
     result = run("render", "meadow", "2", "--theme", "sand", "--shape", "star-5-2", "--out", str(out))

@@ -161,8 +161,9 @@ def _raw_list(value: Any) -> list:
     return value if isinstance(value, list) else []
 
 
-def _raw_count(value: Any) -> int:
-    return value if isinstance(value, int) and not isinstance(value, bool) and value > 0 else 0
+def _raw_count(value: Any, most: int) -> int:
+    """A count as written, if it is one its own field accepts (else 0: that field's check says why)."""
+    return value if isinstance(value, int) and not isinstance(value, bool) and 0 < value <= most else 0
 
 
 def _raw_vertices(shape: Any) -> int:
@@ -170,20 +171,22 @@ def _raw_vertices(shape: Any) -> int:
     if not isinstance(shape, dict):
         return 0
     if shape.get("regular") is not None:
-        return _raw_count(shape["regular"])
+        return _raw_count(shape["regular"], polygon.MAX_SIDES)
     star = shape.get("star")
     if isinstance(star, list) and star:
-        return 2 * _raw_count(star[0])
+        return 2 * _raw_count(star[0], MAX_STAR_POINTS)
     if isinstance(shape.get("vertices"), list):
-        return len(shape["vertices"])
+        return _raw_count(len(shape["vertices"]), polygon.MAX_SIDES)
     random = shape.get("random")
-    return _raw_count(random.get("vertices")) if isinstance(random, dict) else 0
+    return _raw_count(random.get("vertices"), polygon.MAX_SIDES) if isinstance(random, dict) else 0
 
 
 def _raw_wall_vertices(wall: Any) -> int:
     if not isinstance(wall, dict):
         return 0
-    return len(wall["polygon"]) if isinstance(wall.get("polygon"), list) else 4 * (wall.get("box") is not None)
+    if isinstance(wall.get("polygon"), list):
+        return _raw_count(len(wall["polygon"]), MAX_WALL_VERTICES)
+    return 4 * (wall.get("box") is not None)
 
 
 class Scene(Strict_):

@@ -408,3 +408,16 @@ def test_a_scene_of_many_large_bodies_is_refused_before_any_outline_is_built(tmp
     assert main(["validate", str(path)]) == 1
     assert "25,600 vertices in all: at most 10,000 in one file" in capsys.readouterr().err
     assert built == []
+
+
+def test_numbers_with_an_exponent_and_no_dot_are_numbers(tmp_path, capsys):
+    """YAML 1.1 (PyYAML) read `5e-1` as a string, and the author got 'Input should be a valid
+    number, got '5e-1''; YAML 1.2 and every author read a number: the scene plays as written plainly."""
+    written = _sub(_sub(SCENE, "{regular: 4, radius: 0.5}", "{regular: 4, radius: 5e-1}"),
+                   "position: [3.0, 0.0]", "position: [3E0, -0e0]")
+    results = []
+    for folder, scene in (("plain", SCENE), ("exponents", written)):
+        (tmp_path / folder).mkdir()
+        assert main(["simulate", str(place(tmp_path / folder, "scene", scene)), "--seconds", "0.1", "--json"]) == 0
+        results.append(json.loads(capsys.readouterr().out)["bodies"])
+    assert results[0] == results[1]

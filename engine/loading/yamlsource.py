@@ -59,6 +59,16 @@ def format_loc(loc: Loc) -> str:
     return out or "(top level)"
 
 
+class _Loader(yaml.SafeLoader):
+    """YAML's safe loader, reading `1e-9` and `2E5` as numbers as YAML 1.2 does (YAML 1.1, which PyYAML
+    follows, wants a dot in a float, so an author's `1e-9` was the string '1e-9')."""
+
+
+_Loader.add_implicit_resolver("tag:yaml.org,2002:float",
+                              re.compile(r"^[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)[eE][-+]?[0-9]+$"),
+                              list("-+0123456789."))
+
+
 class _Builder:
     """Plain data from composed nodes, with the line of every key and list item."""
 
@@ -118,7 +128,7 @@ class _Builder:
 def _check_events(text: str, file: str) -> None:
     """Depth and size from the event stream, before a node is built (the composer recurses)."""
     depth = events = 0
-    for event in yaml.parse(text, Loader=yaml.SafeLoader):
+    for event in yaml.parse(text, Loader=_Loader):
         events += 1
         if isinstance(event, yaml.CollectionStartEvent):
             depth += 1
@@ -180,7 +190,7 @@ def load_yaml(path: str | Path) -> tuple[Any, dict[Loc, int]]:
     text = read_text(path)
     try:
         _check_events(text, file)
-        root = yaml.compose(text, Loader=yaml.SafeLoader)
+        root = yaml.compose(text, Loader=_Loader)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         line = mark.line + 1 if mark else 0

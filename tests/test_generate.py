@@ -350,6 +350,9 @@ def test_play_random_nine_builds_it_with_console_lines(library, monkeypatch, cap
     monkeypatch.setattr(nine, "build_nine", functools.partial(nine.build_nine, prove=instant_proof()))
     monkeypatch.setattr(app, "make_window", lambda: None)
     monkeypatch.setattr(app, "arcade_run", lambda *args: None)
+    # No window here, so no display asked for: a test before this one in the same process may have
+    # drawn offscreen (`render`), after which the check refuses a window.
+    monkeypatch.setattr(app, "_check_display", lambda: None)
     monkeypatch.setattr("polygolf.game.flow.ScreenFlow.loading", lambda self, then: then())  # no window here
     started = []
     monkeypatch.setattr("polygolf.game.flow.ScreenFlow.new_round", lambda self, start_at=0: started.append(

@@ -22,7 +22,6 @@ import numpy as np
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
 from polygolf.engine.physics.jit import inlined_leaf, kernel, leaf_kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
-from polygolf.engine.physics.settings import GAP_TOLERANCE
 from polygolf.engine.physics.toi import reaches_wall, toi_work, widest
 
 # Prefer polygon A's face unless B's is clearly better: stops the reference face flickering between
@@ -217,11 +216,13 @@ def wall_contacts(va: np.ndarray, na: np.ndarray, shape_verts: np.ndarray, shape
                   spin: float, dt: float, pressed: bool, walls: tuple, pieces: np.ndarray,
                   margin: float, out: np.ndarray, clip: np.ndarray, work: tuple) -> int:
     """A body's contacts with the wall pieces listed (`collide_sets`, wall piece by wall piece),
-    keeping those of a piece only if the body touches it (within GAP_TOLERANCE), or is `pressed` by
-    another body, or would close the gap moving on as it is for dt (`toi.reaches_wall`): a ball
-    passing a corner it never touches is never hit. `va`, `na`: the body's pieces posed at (x, y,
-    angle); `shape_*`: the same in its own frame. Returns the rows kept, at the top of `out`.
-    `clip`, `work`: scratch for `collide_convex` and the time of impact (`toi.toi_work`)."""
+    keeping those of a piece only if the body is in it, or is `pressed` by another body, or would
+    press into it moving on as it is for dt (`toi.reaches_wall`): a ball passing a corner it never
+    touches is never hit, however near it passes (a contact within GAP_TOLERANCE of a corner, kept
+    unasked, took the body's next face for its normal and struck a dodecagon level with a box's top).
+    `va`, `na`: the body's pieces posed at (x, y, angle); `shape_*`: the same in its own frame.
+    Returns the rows kept, at the top of `out`. `clip`, `work`: scratch for `collide_convex` and the
+    time of impact (`toi.toi_work`)."""
     wv, wn, wf, internal, hidden = walls
     rows = collide_sets(va, na, fa, wv, wn, wf, pieces, internal, hidden, True, margin, True, out, clip)
     kept = 0
@@ -234,7 +235,7 @@ def wall_contacts(va: np.ndarray, na: np.ndarray, shape_verts: np.ndarray, shape
             lowest = min(lowest, out[end, SEP])
             end += 1
         g = int(piece)
-        if pressed or lowest <= GAP_TOLERANCE or reaches_wall(shape_verts, shape_normals, fa, reach, x, y, angle,
+        if pressed or lowest <= 0.0 or reaches_wall(shape_verts, shape_normals, fa, reach, x, y, angle,
                                                               vx, vy, spin, dt, wv, wn, wf[g], wf[g + 1], work):
             for r in range(k, end):
                 for c in range(ROW):  # (row by row: a leaf copies no array)

@@ -4,7 +4,9 @@ FRAME_DT = 1.0 / 60.0  # one displayed frame; the preset splits it into substeps
 
 LINEAR_SLOP = 0.005  # overlap tolerated without correction, m (keeps resting contacts still)
 CONTACT_MARGIN = 2.0 * LINEAR_SLOP  # points closer than this are contacts, m
-GAP_TOLERANCE = 1e-4  # m: a wall contact with a larger gap acts only if this substep's motion closes it
+# m: a contact with a gap acts only if the motion would press in deeper than this (against a wall
+# any gap is asked; two bodies, a gap wider than this)
+GAP_TOLERANCE = 1e-4
 TOI_TARGET = LINEAR_SLOP  # continuous collision stops a body this far from the surface, m
 POSITION_BETA = 0.2  # fraction of the overlap removed per substep
 MAX_CORRECTION = 0.1  # largest positional correction per substep, m

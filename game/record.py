@@ -88,8 +88,8 @@ class RoundRecord(_Strict):
         renamed), and return the path. The course id is made safe for a file name (a course's name
         may hold '/' or be long), so no round is lost for its name; the file itself says the course."""
         folder.mkdir(parents=True, exist_ok=True)
-        stamp = re.sub(r"[^A-Za-z0-9_-]+", "_", self.recorded_at.replace(":", "").replace("-", ""))
-        course = re.sub(r"[^A-Za-z0-9_-]+", "_", self.course)[:MAX_FILE_COURSE] or "_"
+        stamp = _file_safe(self.recorded_at.replace(":", "").replace("-", ""))
+        course = _file_safe(self.course)[:MAX_FILE_COURSE] or "_"
         path = folder / f"{stamp}-{course}.json"
         n = 1
         while path.exists():
@@ -99,6 +99,11 @@ class RoundRecord(_Strict):
         tmp.write_text(json.dumps(self.model_dump(mode="json"), indent=1))
         tmp.replace(path)
         return path
+
+
+def _file_safe(text: str) -> str:
+    """`text` with every run of characters other than letters, digits, '-' and '_' made one '_'."""
+    return re.sub(r"[^A-Za-z0-9_-]+", "_", text)
 
 
 class _NotAReplayNumber(ValueError):

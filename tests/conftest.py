@@ -15,18 +15,9 @@ PRESET_NAMES = ("fast", "balanced", "accurate")
 
 
 def pytest_sessionstart(session: pytest.Session) -> None:
-    """Compile every physics kernel once, before any test: with pytest-xdist this runs in the
-    controller before it starts its workers, so they load the kernels from the cache rather than
-    each compiling them at once (and so do the processes tests start: workers, the command line)."""
-    if not hasattr(session.config, "workerinput"):
-        from polygolf.engine.physics.jit import compile_kernels
-
-        compile_kernels()
-
-
-@pytest.fixture(scope="session", autouse=True)
-def compiled_kernels() -> None:
-    """Load every kernel in this process (compiled by `pytest_sessionstart`)."""
+    """Compile (or load) every physics kernel once per process, before any test. With pytest-xdist
+    the controller runs this before it starts its workers, so they, and the processes tests start
+    (workers, the command line), load the kernels from the cache rather than each compiling them."""
     from polygolf.engine.physics.jit import compile_kernels
 
     compile_kernels()

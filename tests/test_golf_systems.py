@@ -83,6 +83,51 @@ def test_cup_cap_falls_linearly_from_centre_to_rim(world, distance, speed, drops
         assert body.asleep and (body.x, body.y) == (0.0, 0.0)
 
 
+def _rolling_balls_and_cups(world_name: str, run: bool) -> tuple[list[int], list[Body], list]:
+    """Three balls rolling towards two cups (the third too fast to drop) stepped 240 substeps, by a
+    run of compiled stages (integrate and cup as one kernel call, whole frames of 4 substeps) or
+    by the processors one at a time; the holed events, the balls and their `Ball.holed`."""
+    from polygolf.engine.systems.integrate import IntegrateProcessor
+    from polygolf.engine.systems.run import StageRun
+
+    esper.switch_world(world_name)
+    res = ctx()
+    esper.create_entity(Cup(1.0, 0.0, 0.55, 4.0))
+    esper.create_entity(Cup(0.0, 3.0, 0.55, 4.0))
+    bodies = [Body.dynamic(0.0, 0.0, 1.0, 1.0, vx=1.5), Body.dynamic(0.0, 2.0, 1.0, 1.0, vy=0.8),
+              Body.dynamic(-1.0, 0.0, 1.0, 1.0, vx=9.0)]
+    ents = [esper.create_entity(body, Ball(0.0, 0.0)) for body in bodies]
+    members = [IntegrateProcessor(res), CupProcessor(res)]
+    if run:
+        stage = StageRun(res, members)
+        for _ in range(60):
+            stage.process(4)
+    else:
+        for _ in range(240):
+            for member in members:
+                member.process()
+    holed = [ent for kind, ent, _ in res.events.fired if kind == "holed"]
+    return holed, bodies, [esper.component_for_entity(ent, Ball).holed for ent in ents]
+
+
+def test_the_cup_in_a_run_of_compiled_stages_drops_each_ball_once_as_alone():
+    """The cup's kernel runs inside a run of substeps; the balls it drops are said holed when the run
+    ends, once each, in the order they dropped, and lie where the cup alone would have put them."""
+    try:
+        holed, bodies, flags = _rolling_balls_and_cups("cup-run", run=True)
+        alone_holed, alone_bodies, alone_flags = _rolling_balls_and_cups("cup-alone", run=False)
+    finally:
+        esper.switch_world("default")
+        for name in ("cup-run", "cup-alone"):
+            esper.delete_world(name)
+    ents = sorted(holed)
+    assert len(holed) == 2 and flags == [True, True, False] and holed == alone_holed and flags == alone_flags
+    assert holed == ents  # 1.5 m/s drops 0.34 m from the centre, after 0.44 s; 0.8 m/s 0.44 m out, after 0.7 s
+    assert [(b.x, b.y, b.asleep) for b in bodies[:2]] == [(1.0, 0.0, True), (0.0, 3.0, True)]
+    assert [b._row.tolist() for b in bodies] == [b._row.tolist() for b in alone_bodies]
+    assert bodies[2].x > 1.55 and not bodies[2].asleep  # over the first cup at 9 m/s: it rolls on
+
+
 def test_scoring_counts_strokes_and_holes(world):
     res = ctx()
     esper.add_processor(ScoringProcessor(res))

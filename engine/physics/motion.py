@@ -160,28 +160,31 @@ def drag(state: np.ndarray, rows: np.ndarray, rates: np.ndarray, dt: float) -> N
 _NEARLY = 1.0 + 1e-9
 
 
+@inlined_leaf
+def cup_under(state: np.ndarray, k: int, cups: np.ndarray) -> int:
+    """The first cup (x, y, radius, max_speed) the centre of body row k is over slowly enough to
+    drop in, or -1: at most `max_speed` over the centre, falling linearly to zero at the rim."""
+    for c in range(cups.shape[0]):
+        dx, dy = state[k, X] - cups[c, 0], state[k, Y] - cups[c, 1]
+        if not dx * dx + dy * dy < cups[c, 2] * cups[c, 2] * _NEARLY:
+            continue  # well outside: no need of the exact distance
+        distance = math.hypot(dx, dy)
+        if distance < cups[c, 2]:
+            share = 1.0 - distance / cups[c, 2]
+            if math.hypot(state[k, VX], state[k, VY]) < cups[c, 3] * (share if share > 0.0 else 0.0):
+                return c
+    return -1
+
+
 @leaf_kernel
 def captured(state: np.ndarray, rows: np.ndarray, cups: np.ndarray, out: np.ndarray) -> int:
-    """For each awake body of `rows`, the first cup (x, y, radius, max_speed) its centre is over
-    slowly enough to drop in, or -1: at most `max_speed` over the centre, falling linearly to zero at
-    the rim. Returns how many were caught."""
+    """For each awake body of `rows`, the cup it drops into (`cup_under`), or -1. Returns how many
+    were caught."""
     caught = 0
     for q in range(rows.shape[0]):
         k = rows[q]
-        out[q] = -1
-        if state[k, ASLEEP] != 0.0:
-            continue
-        for c in range(cups.shape[0]):
-            dx, dy = state[k, X] - cups[c, 0], state[k, Y] - cups[c, 1]
-            if not dx * dx + dy * dy < cups[c, 2] * cups[c, 2] * _NEARLY:
-                continue  # well outside: no need of the exact distance
-            distance = math.hypot(dx, dy)
-            if distance < cups[c, 2]:
-                share = 1.0 - distance / cups[c, 2]
-                if math.hypot(state[k, VX], state[k, VY]) < cups[c, 3] * (share if share > 0.0 else 0.0):
-                    out[q] = c
-                    caught += 1
-                    break
+        out[q] = -1 if state[k, ASLEEP] != 0.0 else cup_under(state, k, cups)
+        caught += out[q] >= 0
     return caught
 
 

@@ -7,8 +7,9 @@ Nothing here is a second engine: the run calls each stage's own kernel (the one 
 it hands on what they share as the resources do between processors: the candidates (broadphase to
 narrowphase), the contact table (narrowphase to the solver, restitution and the next substep's
 rest detection and warm start), the stats. The impacts a run hears are told to the listener when it
-ends, in order. A stage that needs Python (the golf rules, which change components and emit golf
-events) stays a processor of its own and ends a run.
+ends, in order, and the balls it drops into the cup are marked holed and said so then. A stage that
+needs Python (the other golf rules, which change components) stays a processor of its own and ends a
+run.
 
 Every stage kind has a place in the inputs tuple; a stage the world does not run gets `IDLE` inputs
 of the same types, so one compiled `run_stages` serves every world.
@@ -39,6 +40,7 @@ from polygolf.engine.physics.jit import COMPILED, kernel, numba, warm_up
 from polygolf.engine.physics.motion import accelerate, drag, kinetic_energy, turn
 from polygolf.engine.systems.broadphase import BroadphaseProcessor, pick
 from polygolf.engine.systems.ccd import CCDProcessor, sweep
+from polygolf.engine.systems.cup import CupProcessor, drop
 from polygolf.engine.systems.drag import DragProcessor
 from polygolf.engine.systems.gravity import GravityProcessor
 from polygolf.engine.systems.ice import IceProcessor
@@ -53,13 +55,13 @@ from polygolf.engine.systems.spin import SpinProcessor
 from polygolf.engine.systems.surface import scale_on_surfaces
 
 # Stage codes, and the place of each stage's inputs in the inputs tuple (the last two have none).
-(INTEGRATE, GRAVITY, SLOPE, SAND, ICE, DRAG, CCD, BROADPHASE, NARROWPHASE, RESOLVE, IMPACTS, RESTITUTION,
- SPIN) = range(13)
+(INTEGRATE, GRAVITY, SLOPE, SAND, ICE, DRAG, CCD, BROADPHASE, NARROWPHASE, RESOLVE, IMPACTS, CUP, RESTITUTION,
+ SPIN) = range(14)
 CODES: dict[type[esper.Processor], int] = {
     IntegrateProcessor: INTEGRATE, GravityProcessor: GRAVITY, SlopeProcessor: SLOPE, SandProcessor: SAND,
     IceProcessor: ICE, DragProcessor: DRAG, CCDProcessor: CCD, BroadphaseProcessor: BROADPHASE,
     NarrowphaseProcessor: NARROWPHASE, ResolveProcessor: RESOLVE, ImpactsProcessor: IMPACTS,
-    RestitutionProcessor: RESTITUTION, SpinProcessor: SPIN,
+    RestitutionProcessor: RESTITUTION, SpinProcessor: SPIN, CupProcessor: CUP,
 }
 
 # Columns of a run's metrics (`Simulation.Metrics`, as `measure_substep` keeps them).
@@ -183,6 +185,8 @@ def run_stages(held: Held, substeps: int, dt: float, stats: np.ndarray, metrics:
                     stats[COLD_RESTARTS] += resolve(state, walls[4], inputs[RESOLVE], table, dt)
             elif code == IMPACTS:
                 hear(table, inputs[IMPACTS])
+            elif code == CUP:
+                drop(state, inputs[CUP])
             elif code == RESTITUTION:
                 if len(table[1]):
                     stats[BOUNCES] += bounce(state, walls[4], table)
@@ -213,6 +217,7 @@ def _idle_inputs() -> tuple:
         (False, True),  # narrowphase
         (True, 1, 1, 0, True),  # resolve
         (flags, np.zeros((1, HEARD_COLUMNS)), np.zeros(1, dtype=np.int64)),  # impacts
+        (ints, np.zeros((0, 4)), flags, ints, np.zeros(1, dtype=np.int64)),  # cup
     )
 
 
@@ -239,7 +244,7 @@ class StageRun(esper.Processor):
         self.codes = np.array(codes, dtype=np.int64)
         self._by_code = dict(zip(codes, members, strict=True))
         self._finds, self._uses = BROADPHASE in codes, NARROWPHASE in codes
-        self._impacts = self._by_code.get(IMPACTS)
+        self._impacts, self._cup = self._by_code.get(IMPACTS), self._by_code.get(CUP)
         self._key: tuple = ()
         self._held: Held | None = None
         self._holds = 0  # manifolds in the table it holds
@@ -281,6 +286,8 @@ class StageRun(esper.Processor):
         contacts.keep(self, self._holds, fresh=self._uses)
         if self._impacts is not None:
             self._impacts.tell()
+        if self._cup is not None:
+            self._cup.tell()
         if self._finds and not self._uses:
             found = res.candidates
             found.near, found.near_first, found.near_found, found.pair_ents = held_candidates(self._held)
@@ -341,4 +348,5 @@ def _warm_alone() -> None:
     touch(state, shapes, walls, IDLE[NARROWPHASE], candidates, table, stats, dt)
     resolve(state, walls[4], IDLE[RESOLVE], table, dt)
     hear(table, IDLE[IMPACTS])
+    drop(state, IDLE[CUP])
     bounce(state, walls[4], table)

@@ -93,9 +93,9 @@ def simulate_shots(hole: Hole, shots: Sequence[Shot], preset: Knobs | str = "bal
         balls, running = Selection(), np.ones(len(shots), dtype=np.bool_)
         # Each ball's rest as last seen, and room for the balls that came to rest since (`came_to_rest`).
         asleep, resting = np.zeros(len(shots), dtype=np.bool_), np.empty(len(shots), dtype=np.int64)
-        frames = 0
+        frames, left = 0, len(shots)  # (left: how many still run)
         sim.res.events.drain()
-        while frames < round(max_seconds / FRAME_DT) and running.any():
+        while frames < round(max_seconds / FRAME_DT) and left:
             sim.step(1, measure=False)
             frames += 1
             if path or until_contact:
@@ -117,6 +117,7 @@ def simulate_shots(hole: Hole, shots: Sequence[Shot], preset: Knobs | str = "bal
             for k in ended:
                 if running[k]:
                     done[k], running[k] = frames * FRAME_DT, False
+                    left -= 1
         store, picked = sim.res.bodies.gather(esper.get_component(Body)), balls.of(sim.res.bodies, rows)
         poses = store[picked][:, [X, Y, ANGLE]].tolist()
         return [ShotResult(rest=(x, y), angle=angle, holed=state.holed,

@@ -14,7 +14,9 @@ class ScoringProcessor(esper.Processor):
     still in play neither hit it in the cup nor where it was picked up.
 
     A ball's state can change only through an event or by its coming to rest, so only those balls
-    are looked at (all of them when the world's entities change)."""
+    are looked at (all of them when the world's entities change); and a rest matters only to a ball
+    on its last stroke, so while there is none and no event, a substep is not looked at at all (a
+    thousand shots' search has none)."""
 
     name = "scoring"
 
@@ -23,6 +25,8 @@ class ScoringProcessor(esper.Processor):
         self._balls = Selection()
         self._was_asleep = np.zeros(0, dtype=np.bool_)  # each ball's rest as last seen (now, after a look)
         self._rested = np.zeros(0, dtype=np.int64)
+        self._listed: list | None = None  # the balls `_waiting` is about
+        self._waiting = False  # whether a ball still in play is on its last stroke
 
     def process(self) -> None:
         fired, self.events.fired = self.events.fired, []
@@ -36,8 +40,10 @@ class ScoringProcessor(esper.Processor):
                 hole.penalties += amount
             elif kind == "holed":
                 hole.holed = True
-        state = self.bodies.gather(esper.get_component(Body))
         balls = esper.get_components(Body, Ball, HoleState)
+        if not fired and balls is self._listed and not self._waiting:
+            return  # no event, and no ball a rest would pick up
+        state = self.bodies.gather(esper.get_component(Body))
         known = self._balls.rows
         rows = self._balls.of(self.bodies, balls)
         if rows is not known or len(self._was_asleep) != len(rows):  # new entities: look at every ball once
@@ -56,3 +62,5 @@ class ScoringProcessor(esper.Processor):
                 hole.picked_up = True
             if hole.finished and esper.has_component(ent, Collider):
                 esper.remove_component(ent, Collider)
+        self._waiting = any(not hole.finished and hole.score >= hole.max_strokes for _, (_, _, hole) in balls)
+        self._listed = balls

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from polygolf.engine.assembly.simulation import Simulation
+from polygolf.engine.components import Collider
 from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.golf.scenes import find_hole
 from polygolf.engine.loading.scene import ShapeSpec
@@ -40,7 +41,8 @@ def _same_tables(a: ContactTable, b: ContactTable) -> None:
 @pytest.mark.parametrize(("scene", "preset"), SCENES)
 def test_a_run_is_its_processors_one_by_one(scene, preset):
     with scene_sim(scene, preset) as whole, scene_sim(scene, preset) as alone, scene_sim(scene, preset) as timed:
-        assert whole._whole is not None, "a scene's stages are all compiled: one call a frame"
+        before, _, after = whole._parts  # a scene's stages are all compiled: one call a frame
+        assert before == after == []
         for _ in range(40):
             whole.step(3)
             step_alone(alone, 3)
@@ -92,9 +94,38 @@ def test_schedule_joins_each_stretch_of_compiled_stages():
         assert runs[0].name.endswith("+resolve+impacts+restitution+cup")  # the cup is a kernel too
         assert names[names.index(runs[0].name) + 1:] == ["scoring"]  # the other golf rules need Python
         assert sum(len(p.members) if isinstance(p, StageRun) else 1 for p in scheduled) == len(world.sim.processors)
-        assert world.sim._whole is None  # golf stages between runs: a substep at a time
+        assert names[:2] == ["shot", "windmill"]
+        assert world.sim._parts is None  # the windmill drives its arm every substep: a substep at a time
     finally:
         world.close()
+
+
+def test_a_frame_that_drops_the_ball_into_the_cup_is_the_substeps_one_by_one():
+    """Straight: a putt into the cup. The golf rules are quiet between the shot and the drop, so
+    frames go through in one kernel call; the run stops after the substep the ball drops in, so the
+    scoring stage hears of it before the next, as it does a substep at a time."""
+    hole = find_hole("meadow:1", ROOT)
+    shape = ShapeSpec(regular=6, radius=1.0)
+    whole, alone = HolePlay(hole, shape, "fast"), HolePlay(hole, shape, "fast")
+    try:
+        assert whole.sim._parts is not None
+        tee = whole.ball.x, whole.ball.y
+        for world in (whole, alone):
+            assert world.shoot(tee, (2.0, 0.0))
+        frames = 0
+        while not whole.state.holed and frames < 600:
+            whole.step(1)
+            step_alone(alone.sim, 1)
+            frames += 1
+            assert np.array_equal(whole.sim.res.bodies.state, alone.sim.res.bodies.state)
+            assert whole.drain_events() == alone.drain_events()
+            assert (whole.state.holed, whole.state.strokes) == (alone.state.holed, alone.state.strokes)
+        assert whole.state.holed and whole.state.strokes == 1 and 30 < frames < 600
+        esper.switch_world(whole.sim.world)
+        assert not esper.has_component(whole.ball_entity, Collider)  # scoring took the ball off the green
+    finally:
+        whole.close()
+        alone.close()
 
 
 def test_a_table_put_from_outside_is_what_the_run_goes_on_from():

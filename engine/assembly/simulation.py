@@ -47,7 +47,9 @@ class Metrics:
 class Simulation:
     """Steps whole 1/60 s frames; each frame runs every processor once per substep. Consecutive
     compiled stages run as one (`systems.run`); a world that is all compiled stages runs each
-    frame in one kernel call, measuring included.
+    frame in one kernel call, measuring included, and so does a hole whose golf rules around that
+    run are quiet (no shot asked for, no event to count): then the rules are called once a frame,
+    or again after a substep in which a ball dropped.
 
     esper keeps its worlds in module state, so every call switches to this simulation's own world;
     `close()` deletes it.
@@ -68,7 +70,7 @@ class Simulation:
         scheduled = schedule(res, self.processors)
         for priority, proc in enumerate(reversed(scheduled)):
             esper.add_processor(proc, priority=priority)
-        self._whole = scheduled[0] if len(scheduled) == 1 and isinstance(scheduled[0], StageRun) else None
+        self._parts = _frame_parts(scheduled)
         energy = self.kinetic_energy()
         self.metrics.initial_energy = self.metrics.max_energy = self.metrics.final_energy = energy
 
@@ -88,9 +90,9 @@ class Simulation:
         start = time.perf_counter()
         times = metrics.system_seconds
         for _ in range(frames):
-            if self._whole is not None and not profile:
+            if self._parts is not None and not profile:
                 values = metrics.packed() if measure else None
-                self._whole.process(substeps, values)
+                self._step_frame(substeps, values)
                 if values is not None:
                     metrics.unpack(values)
                 metrics.frames += 1
@@ -107,6 +109,21 @@ class Simulation:
                     self._measure()
             metrics.frames += 1
         metrics.wall_seconds += time.perf_counter() - start
+
+    def _step_frame(self, substeps: int, metrics: np.ndarray | None) -> None:
+        """One frame of a world whose compiled stages are one run, between golf rules that can say
+        when they are quiet (`quiet()`: their next calls would do nothing until a stage tells them
+        something): the run takes every substep it can at once, the rules being called where they
+        could act, so the frame is the same as a substep at a time."""
+        before, run, after = self._parts
+        left = substeps
+        while left:
+            for proc in before:
+                proc.process()
+            quiet = all(proc.quiet() for proc in before) and all(proc.quiet() for proc in after)
+            left -= run.process(left if quiet else 1, metrics)
+            for proc in after:
+                proc.process()
 
     def run(self, seconds: float, measure: bool = True) -> None:
         self.step(round(seconds * 60.0), measure=measure)
@@ -178,3 +195,12 @@ class Simulation:
 
     def __exit__(self, *exc: object) -> None:
         self.close()
+
+
+def _frame_parts(scheduled: Sequence[esper.Processor]) -> tuple[list, StageRun, list] | None:
+    """The scheduled processors as (before, run, after) if there is one run of compiled stages and
+    every other processor can say when it is quiet; else None (a substep at a time)."""
+    runs = [k for k, proc in enumerate(scheduled) if isinstance(proc, StageRun)]
+    if len(runs) != 1 or not all(hasattr(proc, "quiet") for proc in scheduled if not isinstance(proc, StageRun)):
+        return None
+    return list(scheduled[:runs[0]]), scheduled[runs[0]], list(scheduled[runs[0] + 1:])

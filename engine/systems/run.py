@@ -143,10 +143,12 @@ def put_candidates(held: Held, candidates: tuple) -> None:
 
 
 @kernel
-def run_stages(held: Held, substeps: int, dt: float, stats: np.ndarray, metrics: np.ndarray, measure: bool) -> int:
+def run_stages(held: Held, substeps: int, dt: float, stats: np.ndarray, metrics: np.ndarray, measure: bool
+               ) -> tuple[int, int]:
     """A run's stages (`hold`), in order, `substeps` times, each with its inputs, and
-    `measure_substep` after each substep with `measure`. Returns how many manifolds the contact
-    table it holds now has.
+    `measure_substep` after each substep with `measure`; but it stops after a substep in which a
+    ball dropped into the cup (the golf rules must hear of it before the next). Returns how many
+    manifolds the contact table it holds now has, and how many substeps it ran.
 
     What it holds is taken out once, before the loops: numba counts a reference to each array taken
     out of a structure and lets it go after, and a stage's kernel, inlined in a branch of these
@@ -155,7 +157,8 @@ def run_stages(held: Held, substeps: int, dt: float, stats: np.ndarray, metrics:
     codes, state, shapes, walls, fat_boxes, inputs = held.codes, held.state, held.shapes, held.walls, \
         held.fat_boxes, held.inputs
     candidates, table, found = held.candidates, held.table, held.found
-    for _ in range(substeps):
+    ran = 0
+    while ran < substeps:
         for code in codes:
             if code == INTEGRATE:
                 integrate(state, table[0], inputs[INTEGRATE], dt)
@@ -192,8 +195,11 @@ def run_stages(held: Held, substeps: int, dt: float, stats: np.ndarray, metrics:
                     stats[BOUNCES] += bounce(state, walls[4], table)
         if measure:
             measure_substep(state, stats, metrics)
+        ran += 1
+        if inputs[CUP][4][0] > 0:
+            break  # a ball dropped
     held.candidates, held.table, held.found = candidates, table, found
-    return len(table[1])
+    return len(table[1]), ran
 
 
 def _no_work() -> tuple:
@@ -227,7 +233,8 @@ _NO_METRICS = np.zeros(5)
 
 class StageRun(esper.Processor):
     """Consecutive compiled stages as one processor: `process()` runs them for one substep, as
-    esper does; `process(substeps, metrics)` runs whole frames (the world has no other stage).
+    esper does; `process(substeps, metrics)` runs several, up to a ball's drop into the cup (the
+    golf rules that follow hear of it before the next substep; `Simulation.step`).
     `members` are the stages' processors (whose own `process` runs the same kernels, for a test of
     a processor alone).
 
@@ -273,7 +280,8 @@ class StageRun(esper.Processor):
         """The contact table this run holds."""
         return contact_table(held_table(self._held), self.res.bodies, self.res.statics.body)
 
-    def process(self, substeps: int = 1, metrics: np.ndarray | None = None) -> None:
+    def process(self, substeps: int = 1, metrics: np.ndarray | None = None) -> int:
+        """Run `substeps` substeps, or fewer if a ball drops into the cup; returns how many ran."""
         res = self.res
         self._hold()
         contacts = res.contacts
@@ -281,8 +289,8 @@ class StageRun(esper.Processor):
             put_table(self._held, contacts.table.arrays)
         if self._uses and not self._finds:
             put_candidates(self._held, res.candidates.arrays)
-        self._holds = run_stages(self._held, substeps, res.config.dt, res.stats.values,
-                                 _NO_METRICS if metrics is None else metrics, metrics is not None)
+        self._holds, ran = run_stages(self._held, substeps, res.config.dt, res.stats.values,
+                                      _NO_METRICS if metrics is None else metrics, metrics is not None)
         contacts.keep(self, self._holds, fresh=self._uses)
         if self._impacts is not None:
             self._impacts.tell()
@@ -291,6 +299,7 @@ class StageRun(esper.Processor):
         if self._finds and not self._uses:
             found = res.candidates
             found.near, found.near_first, found.near_found, found.pair_ents = held_candidates(self._held)
+        return ran
 
 
 def schedule(res: Resources, processors: list[esper.Processor]) -> list[esper.Processor]:

@@ -28,6 +28,12 @@ class ScoringProcessor(esper.Processor):
         self._listed: list | None = None  # the balls `_waiting` is about
         self._waiting = False  # whether a ball still in play is on its last stroke
 
+    def quiet(self) -> bool:
+        """Whether its next call would pass over the substep: no event, no ball on its last stroke,
+        the same balls (only the cup's drop, which ends a run of compiled stages, tells it news)."""
+        return not self.events.fired and not self._waiting and \
+            esper.get_components(Body, Ball, HoleState) is self._listed
+
     def process(self) -> None:
         fired, self.events.fired = self.events.fired, []
         for kind, ent, amount in fired:

@@ -17,6 +17,10 @@ class ShotProcessor(esper.Processor):
         self.events = res.events
         self._seen = -1  # ShotInput.requests when this stage last looked
 
+    def quiet(self) -> bool:
+        """Whether no shot was asked for since it last looked (nothing asks in the middle of a frame)."""
+        return ShotInput.requests == self._seen
+
     def process(self) -> None:
         if ShotInput.requests == self._seen:
             return  # nothing asked for since

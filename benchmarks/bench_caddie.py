@@ -17,6 +17,7 @@ import time
 
 from polygolf.engine.golf.holes import find_course, load_all_courses
 from polygolf.engine.golf.play import HolePlay
+from polygolf.engine.physics.jit import compile_kernels
 from polygolf.game.caddie import preview_path
 from polygolf.game.golfer_process import GolferProcess, question_for
 from polygolf.game.shapes import CATALOGUE
@@ -64,6 +65,7 @@ def main() -> None:
     args = parser.parse_args()
     courses = load_all_courses()[0]
     hint_latency(courses)
+    compile_kernels()  # as the game does before its first screen (else the first preview loads them: 0.1 s)
     for preset in args.preset or ["fast", "balanced"]:
         preview_cost(courses, preset)
 

@@ -132,3 +132,36 @@ def test_a_closed_world_goes_at_once_and_leaves_the_collector_nothing(courses):
         gc.collect()
         simulate_shots(hole, shots, "fast", shape=STAR, max_seconds=0.5, path=path)
         assert gc.collect() == 0, path
+
+
+def test_the_collector_rests_only_while_a_fan_is_simulated(courses, monkeypatch):
+    """`simulate_shots` turns the cyclic collector off while it runs (its objects all live until it
+    returns) and leaves it as it found it, also when it fails."""
+    from polygolf.engine.golf import shots as shots_module
+
+    hole = find_course(courses, "meadow").holes[0]
+    inside = []
+    real_assemble = shots_module.assemble
+
+    def spying(*args, **kwargs):
+        inside.append(gc.isenabled())
+        return real_assemble(*args, **kwargs)
+
+    monkeypatch.setattr(shots_module, "assemble", spying)
+    try:
+        for enabled in (True, False):
+            gc.enable() if enabled else gc.disable()
+            results = simulate_shots(hole, fan(hole.layout.tee, 4, [1.0]), "fast", max_seconds=0.2)
+            assert len(results) == 4 and gc.isenabled() is enabled
+        gc.enable()
+
+        def failing(*args, **kwargs):
+            raise RuntimeError("no world")
+
+        monkeypatch.setattr(shots_module, "assemble", failing)
+        with pytest.raises(RuntimeError, match="no world"):
+            simulate_shots(hole, fan(hole.layout.tee, 4, [1.0]), "fast")
+        assert gc.isenabled()
+    finally:
+        gc.enable()
+    assert inside == [False, False]

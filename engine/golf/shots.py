@@ -5,8 +5,10 @@ try a thousand shots in one world and trust the one it picks."""
 
 from __future__ import annotations
 
+import gc
 import math
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
 
 import esper
@@ -51,6 +53,21 @@ class ShotResult:
     contact_at: tuple[float, float] | None = None
 
 
+@contextmanager
+def _collector_paused() -> Iterator[None]:
+    """The cyclic collector off meanwhile: a fan makes thousands of objects (a body, a collider and
+    components a shot) that all live until it returns, and the collector's passes over them found
+    nothing to free (3 to 8 ms of 85 for 1000 shots)."""
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
+
+
+@_collector_paused()
 def simulate_shots(hole: Hole, shots: Sequence[Shot], preset: Knobs | str = "balanced", *,
                    shape: ShapeSpec = DEFAULT_BALL, max_seconds: float = 20.0, path: bool = False,
                    windmills: Sequence[float] = (), until_contact: bool = False,

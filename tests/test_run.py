@@ -3,6 +3,8 @@ be exactly what its processors do one by one, each with its own `process` (as a 
 
 from __future__ import annotations
 
+import math
+
 import esper
 import numpy as np
 import pytest
@@ -123,6 +125,39 @@ def test_a_frame_that_drops_the_ball_into_the_cup_is_the_substeps_one_by_one():
         assert whole.state.holed and whole.state.strokes == 1 and 30 < frames < 600
         esper.switch_world(whole.sim.world)
         assert not esper.has_component(whole.ball_entity, Collider)  # scoring took the ball off the green
+    finally:
+        whole.close()
+        alone.close()
+
+
+@pytest.mark.parametrize("preset", ["fast", "balanced"])
+def test_two_balls_that_drop_one_after_the_other_are_the_substeps_one_by_one(preset):
+    """Two players putt at once on Straight: the second ball drops while the first still rolls, and
+    the first rolls over the cup after it (its collider gone) and drops too. Frames in one kernel
+    call, stopped at each drop, against the processors a substep at a time."""
+    hole = find_hole("meadow:1", ROOT)
+    shape = ShapeSpec(regular=6, radius=1.0)
+    cup = hole.layout.cup
+    whole, alone = HolePlay(hole, shape, preset, players=2), HolePlay(hole, shape, preset, players=2)
+    try:
+        for world in (whole, alone):
+            for seat, power in ((0, 1.9), (1, 2.8)):
+                world.turn = seat
+                x, y = world.ball.x, world.ball.y
+                d = math.dist((x, y), cup)
+                assert world.shoot((x, y), (power * (cup[0] - x) / d, power * (cup[1] - y) / d))
+        holed_while_the_other_rolled = False
+        for _ in range(600):
+            whole.step(1)
+            step_alone(alone.sim, 1)
+            assert np.array_equal(whole.sim.res.bodies.state, alone.sim.res.bodies.state)
+            assert whole.drain_events() == alone.drain_events()
+            states = [(p.state.holed, p.state.strokes) for p in whole.players]
+            assert states == [(p.state.holed, p.state.strokes) for p in alone.players]
+            holed_while_the_other_rolled |= any(p.state.holed for p in whole.players) and not whole.all_at_rest
+            if whole.finished:
+                break
+        assert whole.finished and holed_while_the_other_rolled
     finally:
         whole.close()
         alone.close()

@@ -89,8 +89,9 @@ class Bumper:
     lit: float = 0.0
 
 
-@dataclass(slots=True)
+@dataclass(frozen=True, slots=True)
 class Windmill:
-    """A kinematic obstacle turning at `speed` rad/s (counter-clockwise) about its centroid."""
+    """A kinematic obstacle turning at `speed` rad/s (counter-clockwise) about its centroid; set once
+    (the windmill stage packs the speeds when the world's entities change)."""
 
     speed: float

@@ -9,7 +9,7 @@ narrowphase), the contact table (narrowphase to the solver, restitution and the 
 rest detection and warm start), the stats. The impacts a run hears are told to the listener when it
 ends, in order, and the balls it drops into the cup are marked holed and said so then. A stage that
 needs Python (the other golf rules, which change components) stays a processor of its own and ends a
-run.
+run. The windmill's drive is a kernel too (it only sets the arms' spin).
 
 Every stage kind has a place in the inputs tuple; a stage the world does not run gets `IDLE` inputs
 of the same types, so one compiled `run_stages` serves every world.
@@ -53,15 +53,16 @@ from polygolf.engine.systems.sand import SandProcessor
 from polygolf.engine.systems.slope import SlopeProcessor, push_on_slopes
 from polygolf.engine.systems.spin import SpinProcessor
 from polygolf.engine.systems.surface import scale_on_surfaces
+from polygolf.engine.systems.windmill import WindmillProcessor, drive
 
 # Stage codes, and the place of each stage's inputs in the inputs tuple (the last two have none).
-(INTEGRATE, GRAVITY, SLOPE, SAND, ICE, DRAG, CCD, BROADPHASE, NARROWPHASE, RESOLVE, IMPACTS, CUP, RESTITUTION,
- SPIN) = range(14)
+(INTEGRATE, GRAVITY, SLOPE, SAND, ICE, DRAG, CCD, BROADPHASE, NARROWPHASE, RESOLVE, IMPACTS, CUP, WINDMILL,
+ RESTITUTION, SPIN) = range(15)
 CODES: dict[type[esper.Processor], int] = {
     IntegrateProcessor: INTEGRATE, GravityProcessor: GRAVITY, SlopeProcessor: SLOPE, SandProcessor: SAND,
     IceProcessor: ICE, DragProcessor: DRAG, CCDProcessor: CCD, BroadphaseProcessor: BROADPHASE,
     NarrowphaseProcessor: NARROWPHASE, ResolveProcessor: RESOLVE, ImpactsProcessor: IMPACTS,
-    RestitutionProcessor: RESTITUTION, SpinProcessor: SPIN, CupProcessor: CUP,
+    RestitutionProcessor: RESTITUTION, SpinProcessor: SPIN, CupProcessor: CUP, WindmillProcessor: WINDMILL,
 }
 
 # Columns of a run's metrics (`Simulation.Metrics`, as `measure_substep` keeps them).
@@ -160,7 +161,9 @@ def run_stages(held: Held, substeps: int, dt: float, stats: np.ndarray, metrics:
     ran = 0
     while ran < substeps:
         for code in codes:
-            if code == INTEGRATE:
+            if code == WINDMILL:
+                drive(state, inputs[WINDMILL])
+            elif code == INTEGRATE:
                 integrate(state, table[0], inputs[INTEGRATE], dt)
             elif code == SPIN:
                 turn(state, dt)
@@ -224,6 +227,7 @@ def _idle_inputs() -> tuple:
         (True, 1, 1, 0, True),  # resolve
         (flags, np.zeros((1, HEARD_COLUMNS)), np.zeros(1, dtype=np.int64)),  # impacts
         (ints, np.zeros((0, 4)), flags, ints, np.zeros(1, dtype=np.int64)),  # cup
+        (ints, floats),  # windmill
     )
 
 
@@ -358,4 +362,5 @@ def _warm_alone() -> None:
     resolve(state, walls[4], IDLE[RESOLVE], table, dt)
     hear(table, IDLE[IMPACTS])
     drop(state, IDLE[CUP])
+    drive(state, IDLE[WINDMILL])
     bounce(state, walls[4], table)

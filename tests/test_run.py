@@ -59,7 +59,8 @@ def test_a_run_is_its_processors_one_by_one(scene, preset):
         assert whole.res.stats.bounces > 0 or whole.res.stats.toi_hits > 0 or scene == "stack-drop"
 
 
-@pytest.mark.parametrize("name", ["hazards:6", "hazards:2", "meadow:8"])  # a windmill, water, bumpers
+@pytest.mark.parametrize("name", ["hazards:6", "hazards:2", "meadow:8", "hazards:9"])  # a windmill; water;
+# walls only; a windmill, bumpers, water, sand and a slope
 def test_a_hole_played_through_runs_is_played_alone_the_same(name):
     """A hole's world has golf stages between its runs; a windmill's pinch test runs in the kernel."""
     hole = find_hole(name, ROOT)
@@ -159,6 +160,34 @@ def test_two_balls_that_drop_one_after_the_other_are_the_substeps_one_by_one(pre
             if whole.finished:
                 break
         assert whole.finished and holed_while_the_other_rolled
+    finally:
+        whole.close()
+        alone.close()
+
+
+def test_bumpers_kick_in_a_frame_run_as_a_substep_at_a_time():
+    """Pinball Wizard: its bumpers kick in the run's kernel, frames in one call, and the lights (kept
+    in the kernel's array, handed to the components when a run ends) are those of the processors
+    one by one."""
+    hole = find_hole("hazards:5", ROOT)
+    shape = ShapeSpec(star=(5, 2), radius=1.0)
+    whole, alone = HolePlay(hole, shape, "balanced"), HolePlay(hole, shape, "balanced")
+    try:
+        assert whole.sim._parts is not None and "bumper" in whole.sim._parts[1].name
+        angle = 2 * math.pi * 4 / 12
+        for world in (whole, alone):
+            assert world.shoot((world.ball.x, world.ball.y), (5.0 * math.cos(angle), 5.0 * math.sin(angle)))
+        kicks, lit_seen = 0, False
+        for _ in range(240):
+            whole.step(1)
+            step_alone(alone.sim, 1)
+            assert np.array_equal(whole.sim.res.bodies.state, alone.sim.res.bodies.state)
+            heard = whole.drain_events()
+            assert heard == alone.drain_events()
+            kicks += sum(impact.kind == "bumper" for impact in heard[1])
+            assert [b.lit for b in whole.bumpers] == [b.lit for b in alone.bumpers]
+            lit_seen |= any(b.lit > 0.0 for b in whole.bumpers)
+        assert kicks >= 3 and lit_seen
     finally:
         whole.close()
         alone.close()

@@ -9,7 +9,8 @@ narrowphase), the contact table (narrowphase to the solver, restitution and the 
 rest detection and warm start), the stats. The impacts a run hears are told to the listener when it
 ends, in order, and the balls it drops into the cup are marked holed and said so then. A stage that
 needs Python (the other golf rules, which change components) stays a processor of its own and ends a
-run. The windmill's drive is a kernel too (it only sets the arms' spin).
+run. The windmill's drive and the bumper's kick are kernels too (the bumpers' lights are handed to
+their components when the run ends).
 
 Every stage kind has a place in the inputs tuple; a stage the world does not run gets `IDLE` inputs
 of the same types, so one compiled `run_stages` serves every world.
@@ -39,6 +40,7 @@ from polygolf.engine.physics.grid import FatBoxes
 from polygolf.engine.physics.jit import COMPILED, kernel, numba, warm_up
 from polygolf.engine.physics.motion import accelerate, drag, kinetic_energy, turn
 from polygolf.engine.systems.broadphase import BroadphaseProcessor, pick
+from polygolf.engine.systems.bumper import BumperProcessor, kick
 from polygolf.engine.systems.ccd import CCDProcessor, sweep
 from polygolf.engine.systems.cup import CupProcessor, drop
 from polygolf.engine.systems.drag import DragProcessor
@@ -57,12 +59,13 @@ from polygolf.engine.systems.windmill import WindmillProcessor, drive
 
 # Stage codes, and the place of each stage's inputs in the inputs tuple (the last two have none).
 (INTEGRATE, GRAVITY, SLOPE, SAND, ICE, DRAG, CCD, BROADPHASE, NARROWPHASE, RESOLVE, IMPACTS, CUP, WINDMILL,
- RESTITUTION, SPIN) = range(15)
+ BUMPER, RESTITUTION, SPIN) = range(16)
 CODES: dict[type[esper.Processor], int] = {
     IntegrateProcessor: INTEGRATE, GravityProcessor: GRAVITY, SlopeProcessor: SLOPE, SandProcessor: SAND,
     IceProcessor: ICE, DragProcessor: DRAG, CCDProcessor: CCD, BroadphaseProcessor: BROADPHASE,
     NarrowphaseProcessor: NARROWPHASE, ResolveProcessor: RESOLVE, ImpactsProcessor: IMPACTS,
     RestitutionProcessor: RESTITUTION, SpinProcessor: SPIN, CupProcessor: CUP, WindmillProcessor: WINDMILL,
+    BumperProcessor: BUMPER,
 }
 
 # Columns of a run's metrics (`Simulation.Metrics`, as `measure_substep` keeps them).
@@ -193,6 +196,8 @@ def run_stages(held: Held, substeps: int, dt: float, stats: np.ndarray, metrics:
                 hear(table, inputs[IMPACTS])
             elif code == CUP:
                 drop(state, inputs[CUP])
+            elif code == BUMPER:
+                kick(state, table, inputs[BUMPER], dt)
             elif code == RESTITUTION:
                 if len(table[1]):
                     stats[BOUNCES] += bounce(state, walls[4], table)
@@ -228,6 +233,7 @@ def _idle_inputs() -> tuple:
         (flags, np.zeros((1, HEARD_COLUMNS)), np.zeros(1, dtype=np.int64)),  # impacts
         (ints, np.zeros((0, 4)), flags, ints, np.zeros(1, dtype=np.int64)),  # cup
         (ints, floats),  # windmill
+        (ints, floats, floats.copy()),  # bumper
     )
 
 
@@ -255,7 +261,8 @@ class StageRun(esper.Processor):
         self.codes = np.array(codes, dtype=np.int64)
         self._by_code = dict(zip(codes, members, strict=True))
         self._finds, self._uses = BROADPHASE in codes, NARROWPHASE in codes
-        self._impacts, self._cup = self._by_code.get(IMPACTS), self._by_code.get(CUP)
+        self._impacts, self._cup, self._bumper = self._by_code.get(IMPACTS), self._by_code.get(CUP), \
+            self._by_code.get(BUMPER)
         self._key: tuple = ()
         self._held: Held | None = None
         self._holds = 0  # manifolds in the table it holds
@@ -300,6 +307,8 @@ class StageRun(esper.Processor):
             self._impacts.tell()
         if self._cup is not None:
             self._cup.tell()
+        if self._bumper is not None:
+            self._bumper.tell()
         if self._finds and not self._uses:
             found = res.candidates
             found.near, found.near_first, found.near_found, found.pair_ents = held_candidates(self._held)
@@ -363,4 +372,5 @@ def _warm_alone() -> None:
     hear(table, IDLE[IMPACTS])
     drop(state, IDLE[CUP])
     drive(state, IDLE[WINDMILL])
+    kick(state, table, IDLE[BUMPER], dt)
     bounce(state, walls[4], table)

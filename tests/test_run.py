@@ -104,6 +104,20 @@ def test_schedule_joins_each_stretch_of_compiled_stages():
         world.close()
 
 
+def test_a_lone_stage_between_python_stages_is_its_own_processor():
+    """Water Carry: the cup comes after water, alone; it stays a processor (its own kernel call),
+    and the hole goes a substep at a time (water is Python and cannot say it is quiet)."""
+    hole = find_hole("hazards:2", ROOT)
+    world = HolePlay(hole, ShapeSpec(regular=5, radius=1.0))
+    try:
+        scheduled = schedule(world.sim.res, world.sim.processors)
+        assert [p.name for p in scheduled][-3:] == ["water", "cup", "scoring"]
+        assert not isinstance(scheduled[-2], StageRun) and world.sim._parts is None
+        assert sum(isinstance(p, StageRun) for p in scheduled) == 1
+    finally:
+        world.close()
+
+
 def test_a_frame_that_drops_the_ball_into_the_cup_is_the_substeps_one_by_one():
     """Straight: a putt into the cup. The golf rules are quiet between the shot and the drop, so
     frames go through in one kernel call; the run stops after the substep the ball drops in, so the

@@ -68,6 +68,9 @@ CODES: dict[type[esper.Processor], int] = {
     BumperProcessor: BUMPER,
 }
 
+# The stages that read or make the contact table.
+TABLE_STAGES = frozenset((INTEGRATE, NARROWPHASE, RESOLVE, IMPACTS, RESTITUTION, BUMPER))
+
 # Columns of a run's metrics (`Simulation.Metrics`, as `measure_substep` keeps them).
 FINAL_ENERGY, MAX_ENERGY, MAX_RISE, NAN, MAX_PENETRATION = range(5)
 
@@ -261,6 +264,9 @@ class StageRun(esper.Processor):
         self.codes = np.array(codes, dtype=np.int64)
         self._by_code = dict(zip(codes, members, strict=True))
         self._finds, self._uses = BROADPHASE in codes, NARROWPHASE in codes
+        # Whether it reads or makes the contact table (a run of the cup alone, after water, does not: it
+        # neither takes the table nor keeps it).
+        self._contacts = bool(TABLE_STAGES.intersection(codes))
         self._impacts, self._cup, self._bumper = self._by_code.get(IMPACTS), self._by_code.get(CUP), \
             self._by_code.get(BUMPER)
         self._key: tuple = ()
@@ -285,7 +291,8 @@ class StageRun(esper.Processor):
                           res.candidates.arrays, table.arrays, np.zeros(16, dtype=np.int64))
         self._key = key
         self._holds = len(table)
-        res.contacts.keep(self, self._holds)
+        if self._contacts:
+            res.contacts.keep(self, self._holds)
 
     def table(self) -> ContactTable:
         """The contact table this run holds."""
@@ -296,13 +303,14 @@ class StageRun(esper.Processor):
         res = self.res
         self._hold()
         contacts = res.contacts
-        if contacts.keeper is not self and (contacts.size or self._holds):  # a table put there since
-            put_table(self._held, contacts.table.arrays)
+        if self._contacts and contacts.keeper is not self and (contacts.size or self._holds):  # a table
+            put_table(self._held, contacts.table.arrays)  # put there since
         if self._uses and not self._finds:
             put_candidates(self._held, res.candidates.arrays)
         self._holds, ran = run_stages(self._held, substeps, res.config.dt, res.stats.values,
                                       _NO_METRICS if metrics is None else metrics, metrics is not None)
-        contacts.keep(self, self._holds, fresh=self._uses)
+        if self._contacts:
+            contacts.keep(self, self._holds, fresh=self._uses)
         if self._impacts is not None:
             self._impacts.tell()
         if self._cup is not None:
@@ -316,7 +324,9 @@ class StageRun(esper.Processor):
 
 
 def schedule(res: Resources, processors: list[esper.Processor]) -> list[esper.Processor]:
-    """The processors as esper runs them: each stretch of compiled stages as one run."""
+    """The processors as esper runs them: each stretch of compiled stages as one run; but a lone
+    stage between Python ones (the cup after water) stays its own processor, whose `process` calls
+    the same kernel for less than a run's call costs (a run takes out and puts back all it holds)."""
     out: list[esper.Processor] = []
     stretch: list[esper.Processor] = []
     for proc in [*processors, None]:
@@ -324,7 +334,7 @@ def schedule(res: Resources, processors: list[esper.Processor]) -> list[esper.Pr
             stretch.append(proc)
             continue
         if stretch:
-            out.append(StageRun(res, stretch))
+            out.append(StageRun(res, stretch) if len(stretch) > 1 or len(processors) == 1 else stretch[0])
         stretch = []
         if proc is not None:
             out.append(proc)

@@ -177,18 +177,6 @@ def cup_under(state: np.ndarray, k: int, cups: np.ndarray) -> int:
 
 
 @leaf_kernel
-def captured(state: np.ndarray, rows: np.ndarray, cups: np.ndarray, out: np.ndarray) -> int:
-    """For each awake body of `rows`, the cup it drops into (`cup_under`), or -1. Returns how many
-    were caught."""
-    caught = 0
-    for q in range(rows.shape[0]):
-        k = rows[q]
-        out[q] = -1 if state[k, ASLEEP] != 0.0 else cup_under(state, k, cups)
-        caught += out[q] >= 0
-    return caught
-
-
-@leaf_kernel
 def kinetic_energy(state: np.ndarray) -> tuple[float, bool]:
     """The bodies' kinetic energy (summed in row order) and whether every pose and energy is finite."""
     total, finite = 0.0, True
@@ -276,7 +264,6 @@ def _warm() -> None:
     accelerate(state, rows, np.array([[1.0, 0.0]]), np.zeros(2, dtype=np.int64), 0.01)
     take_scale(state, rows, np.array([0.5]), np.array([0, -1], dtype=np.int64))
     drag(state, rows, np.array([[0.1, 0.1, 0.5, 0.5], [0.0, 0.0, 0.5, 0.5]]), 0.01)
-    captured(state, rows, np.array([[0.0, 0.0, 1.0, 2.0]]), np.empty(2, dtype=np.int64))
     kinetic_energy(state)
     came_to_rest(state, rows, np.zeros(2, dtype=np.bool_), np.empty(2, dtype=np.int64))
     rewind(state, rows, np.array([0.5, 1.0]))

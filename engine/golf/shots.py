@@ -86,9 +86,10 @@ def simulate_shots(hole: Hole, shots: Sequence[Shot], preset: Knobs | str = "bal
         return []
     alone = hole_spec(hole, shape)
     template = alone.bodies[0]
+    requests = [ShotInput() for _ in shots]
     balls = [replace(template, name=f"shot-{k}", position=s.start, angle=s.angle, asleep=True,
-                     extras=(Ball(*s.start), ShotInput(), HoleState(par=hole.spec.par, max_strokes=99)))
-             for k, s in enumerate(shots)]
+                     extras=(Ball(*s.start), request, HoleState(par=hole.spec.par, max_strokes=99)))
+             for k, (s, request) in enumerate(zip(shots, requests))]
     turned = [replace(part, angle=angle) for part, angle in zip(alone.kinematic, windmills)]
     walls = alone.walls + [WallPart(tuple(outline), Material()) for outline in obstacles]
     # Impacts only tell a listener what was struck: without a path, nobody listens (and a fan strikes
@@ -98,10 +99,11 @@ def simulate_shots(hole: Hole, shots: Sequence[Shot], preset: Knobs | str = "bal
                            collide_bodies=False, rules=rules), preset)
     try:
         esper.switch_world(sim.world)
-        rows = sorted(esper.get_components(Body, ShotInput, HoleState))  # entity order = shots' order
-        for (_, (_, shot_input, _)), shot in zip(rows, shots):  # (each ball lies at its shot's start)
+        # Entity order = shots' order; scoring asks esper the same question (one list for both).
+        rows = sorted(esper.get_components(Body, Ball, HoleState))
+        for request, shot in zip(requests, shots):  # (each ball lies at its shot's start)
             arrow = clamp_arrow(shot.arrow) or (0.0, 0.0)
-            shot_input.request((shot.start[0] + shot.grab[0], shot.start[1] + shot.grab[1]), arrow)
+            request.request((shot.start[0] + shot.grab[0], shot.start[1] + shot.grab[1]), arrow)
         done: list[float | None] = [None] * len(shots)
         paths: list[list[tuple[float, float]]] = [[] for _ in shots]
         contact: list[int | None] = [None] * len(shots)

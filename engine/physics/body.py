@@ -113,6 +113,18 @@ class Body(_Row):
     def is_dynamic(self) -> bool:
         return self.inv_mass > 0.0
 
+    def motion(self) -> list[float]:
+        """x, y, angle, vx, vy, spin, mass, inertia, inv_mass, inv_inertia: one read for a caller that
+        wants several (a fan's shots read them for a thousand balls)."""
+        return self._row[:INV_INERTIA + 1].tolist()
+
+    def push(self, dvx: float, dvy: float, dspin: float) -> None:
+        """Wake it and add this velocity (a shot)."""
+        row = self._row
+        vx, vy, spin = row[VX:SPIN + 1].tolist()
+        row[VX:SPIN + 1] = vx + dvx, vy + dvy, spin + dspin
+        row[ASLEEP] = row[STILL_TIME] = 0.0
+
     def kinetic_energy(self) -> float:
         x, y, angle, vx, vy, spin, mass, inertia, inv_mass = self._row[:INV_MASS + 1].tolist()
         return 0.5 * (mass * (vx * vx + vy * vy) + inertia * spin * spin) if inv_mass > 0.0 else 0.0

@@ -29,22 +29,18 @@ class ShotProcessor(esper.Processor):
             if not shot.pending:
                 continue
             shot.pending = False
-            at_rest = body.asleep or (body.vx == 0.0 and body.vy == 0.0 and body.spin == 0.0)
-            if not at_rest:
-                shot.rejected += 1
+            x, y, _, vx, vy, spin, mass, inertia, _, inv_inertia = body.motion()
+            if not (body.asleep or (vx == 0.0 and vy == 0.0 and spin == 0.0)):
+                shot.rejected += 1  # only at rest
                 continue
-            rx, ry = shot.origin[0] - body.x, shot.origin[1] - body.y
-            dvx, dvy, dspin = shot_velocity(body.mass, body.inertia, collider.radius, rx, ry, *shot.vector,
-                                            rotates=body.inv_inertia > 0.0)
+            dvx, dvy, dspin = shot_velocity(mass, inertia, collider.radius, shot.origin[0] - x, shot.origin[1] - y,
+                                            *shot.vector, rotates=inv_inertia > 0.0)
             if dvx == 0.0 and dvy == 0.0:
                 continue
             ball = esper.try_component(ent, Ball)
             if ball is not None:
-                ball.rest_x, ball.rest_y = body.x, body.y  # where a hazard puts it back
-            body.wake()
-            body.vx += dvx
-            body.vy += dvy
-            body.spin += dspin
+                ball.rest_x, ball.rest_y = x, y  # where a hazard puts it back
+            body.push(dvx, dvy, dspin)
             shot.accepted += 1
             self.events.emit("shot", ent)
-            self.events.strike("shot", math.hypot(dvx, dvy), body.x, body.y, (ent, -1))
+            self.events.strike("shot", math.hypot(dvx, dvy), x, y, (ent, -1))

@@ -123,7 +123,7 @@ class Body(_Row):
         row = self._row
         vx, vy, spin = row[VX:SPIN + 1].tolist()
         row[VX:SPIN + 1] = vx + dvx, vy + dvy, spin + dspin
-        row[ASLEEP] = row[STILL_TIME] = 0.0
+        self.wake()
 
     def kinetic_energy(self) -> float:
         x, y, angle, vx, vy, spin, mass, inertia, inv_mass = self._row[:INV_MASS + 1].tolist()

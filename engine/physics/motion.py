@@ -40,6 +40,14 @@ def _mark_start(state: np.ndarray, k: int) -> None:
 
 
 @leaf_kernel
+def put_to_rest(state: np.ndarray, k: int) -> None:
+    """Body row k at rest where it is: no velocity, no motion owed (`Body.rest`, for kernels)."""
+    state[k, ASLEEP] = 1.0
+    state[k, VX] = state[k, VY] = state[k, SPIN] = 0.0
+    _mark_start(state, k)
+
+
+@leaf_kernel
 def advance(state: np.ndarray, settles: np.ndarray, dt: float, still_step: float, still_turn: float,
             speed_cap: float, time_to_rest: float) -> None:
     """x += v·dt for every awake body (plus the time continuous collision owes it), after putting to
@@ -56,9 +64,7 @@ def advance(state: np.ndarray, settles: np.ndarray, dt: float, still_step: float
                     and vx * vx + vy * vy < speed_cap * speed_cap):
                 state[k, STILL_TIME] += dt
                 if state[k, STILL_TIME] >= time_to_rest:
-                    state[k, ASLEEP] = 1.0
-                    state[k, VX] = state[k, VY] = state[k, SPIN] = 0.0
-                    _mark_start(state, k)
+                    put_to_rest(state, k)
                     continue
             else:
                 state[k, STILL_TIME] = 0.0

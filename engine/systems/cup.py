@@ -3,9 +3,9 @@ import numpy as np
 
 from polygolf.engine.components import Ball, Body, Cup
 from polygolf.engine.components.resources import Resources
-from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, SPIN, VX, X0, Y0, Selection, X, Y
+from polygolf.engine.physics.body import ASLEEP, Selection, X, Y
 from polygolf.engine.physics.jit import leaf_kernel
-from polygolf.engine.physics.motion import cup_under
+from polygolf.engine.physics.motion import cup_under, put_to_rest
 
 
 class CupProcessor(esper.Processor):
@@ -78,9 +78,6 @@ def drop(state: np.ndarray, inputs: tuple) -> None:
             continue
         holed[q] = True
         state[k, X], state[k, Y] = cups[c, 0], cups[c, 1]
-        state[k, ASLEEP] = 1.0
-        for column in range(VX, SPIN + 1):
-            state[k, column] = 0.0
-        state[k, X0], state[k, Y0], state[k, ANGLE0] = state[k, X], state[k, Y], state[k, ANGLE]
+        put_to_rest(state, k)
         dropped[count[0]] = q
         count[0] += 1

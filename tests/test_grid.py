@@ -12,7 +12,17 @@ from hypothesis import strategies as st
 
 from polygolf.engine.loading.scene import Scene, build_scene
 from polygolf.engine.physics.body import ASLEEP, COLUMNS, INV_MASS, SPIN, X0, Y0, X, Y
-from polygolf.engine.physics.grid import BoxGrid, FatBoxes, bodies_near, body_pairs, box_pairs, by_entity
+from polygolf.engine.physics.grid import (
+    PAIR_FAT_MARGIN,
+    BoxGrid,
+    FatBoxes,
+    FatPairs,
+    bodies_near,
+    body_pairs,
+    box_pairs,
+    by_entity,
+    no_fat_pairs,
+)
 
 coord = st.floats(-3000, 3000, allow_nan=False)
 size = st.floats(0.01, 2000, allow_nan=False)
@@ -68,8 +78,8 @@ def test_pairs_with_a_kinematic_body_alone_are_those_of_every_pair(bodies, turni
     rows, radius = np.arange(len(bodies)), np.array([b[4] for b in bodies])
     dynamic = state[:, INV_MASS] != 0.0
     for swept in (True, False):
-        every = body_pairs(state, rows, radius, 0.01, swept, True, turning_is_active, True).tolist()
-        alone = body_pairs(state, rows, radius, 0.01, swept, True, turning_is_active, False).tolist()
+        every = body_pairs(state, rows, radius, 0.01, swept, True, turning_is_active, True, no_fat_pairs()).tolist()
+        alone = body_pairs(state, rows, radius, 0.01, swept, True, turning_is_active, False, no_fat_pairs()).tolist()
         assert alone == [[i, j] for i, j in every if dynamic[i] != dynamic[j]]
 
 
@@ -91,6 +101,55 @@ def test_walls_kept_in_fat_boxes_are_the_grids_answer_as_bodies_move(items, step
         state[:, X] += [dx, -dy, 0.5 * dx]
         state[:, Y] += [dy, dx, -0.5 * dy]
         _check_bodies_near(items, grid, fat_boxes, state, radius, 0.01)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(st.floats(-3, 3), st.floats(-3, 3), st.floats(0.05, 0.6)), min_size=2, max_size=80),
+       st.lists(st.tuples(st.integers(0, 79), st.floats(-0.3, 0.3), st.floats(-0.3, 0.3),
+                          st.sampled_from(["move", "sleep", "wake", "vanish"])), min_size=1, max_size=40))
+def test_pairs_kept_in_fat_boxes_are_every_pair_as_bodies_move(bodies, moves):
+    """A crowd of up to 80 bodies, one moved (by up to 0.3 m: inside its fat box or out of it), put
+    to sleep, woken or sent to infinity or NaN at a time: the pairs picked from those kept between
+    substeps (`FatPairs`) are, every time, the pairs searched for afresh, in order; and room runs
+    short with 80 bodies in a 6 m square (they are kept anyway once it is given)."""
+    state = np.zeros((len(bodies), len(COLUMNS)))
+    state[:, INV_MASS] = 1.0
+    state[:, X], state[:, Y] = [b[0] for b in bodies], [b[1] for b in bodies]
+    rows, radius = np.arange(len(bodies)), np.array([b[2] for b in bodies])
+    fat_pairs = FatPairs()
+    fat_pairs.pairs = fat_pairs.of(state, rows)[1][:2]  # little room: the first rebuilds do not fit
+    for which, dx, dy, how in [(0, 0.0, 0.0, "move"), *moves]:
+        k = which % len(bodies)
+        if how == "move":
+            state[k, X] += dx
+            state[k, Y] += dy
+        elif how == "vanish":
+            state[k, X] = math.inf if dx > 0 else math.nan
+        else:
+            state[k, ASLEEP] = how == "sleep"
+        kept = fat_pairs.of(state, rows)
+        fresh = body_pairs(state, rows, radius, 0.01, False, True, False, True, no_fat_pairs()).tolist()
+        assert body_pairs(state, rows, radius, 0.01, False, True, False, True, kept).tolist() == fresh
+        if how == "vanish":
+            state[k, X] = 0.0
+    fat, _, count = fat_pairs.of(state, rows)
+    assert not fat_pairs.outgrown()  # room given
+    if count[0] >= 0:  # the boxes kept are the bodies' grown by the margin (or larger, from before)
+        assert (fat[:, 2] - fat[:, 0] >= 2 * (radius + 0.01 + PAIR_FAT_MARGIN) - 1e-9).all()
+
+
+def test_fat_pairs_start_again_for_other_bodies():
+    """Kept pairs are for one set of rows of one state: another state or other rows start again."""
+    state = np.zeros((3, len(COLUMNS)))
+    state[:, INV_MASS] = 1.0
+    rows = np.arange(3)
+    fat_pairs = FatPairs()
+    fat, _, count = fat_pairs.of(state, rows)
+    body_pairs(state, rows, np.full(3, 0.1), 0.01, False, True, False, True, (fat, fat_pairs.pairs, count))
+    assert count[0] == 3  # all three at one spot
+    assert fat_pairs.of(state, rows)[2][0] == 3
+    assert fat_pairs.of(state.copy(), rows)[2][0] == -1
+    assert fat_pairs.of(state, rows.copy())[2][0] == -1
 
 
 @settings(max_examples=100, deadline=None)

@@ -13,9 +13,9 @@ from polygolf.engine.assembly.simulation import Simulation
 from polygolf.engine.components import Collider
 from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.golf.scenes import find_hole
-from polygolf.engine.loading.scene import ShapeSpec
+from polygolf.engine.loading.scene import Scene, ShapeSpec, build_scene
 from polygolf.engine.physics.contact import ContactTable
-from polygolf.engine.systems.run import StageRun, schedule
+from polygolf.engine.systems.run import BROADPHASE, StageRun, schedule
 
 from .conftest import ROOT
 from .helpers import scene_sim
@@ -57,6 +57,31 @@ def test_a_run_is_its_processors_one_by_one(scene, preset):
                 assert whole.metrics.max_penetration == other.metrics.max_penetration
         assert set(timed.metrics.system_seconds) == set(timed.system_names)
         assert whole.res.stats.bounces > 0 or whole.res.stats.toi_hits > 0 or scene == "stack-drop"
+
+
+def test_a_crowd_whose_kept_pairs_outgrow_their_room_is_held_again():
+    """150 small balls packed close under gravity (some 15 fat-box pairs a ball, more than the
+    broadphase first makes room for): the run notices, holds its inputs again with room enough, and
+    steps exactly as the processors one by one."""
+    balls = [{"name": f"b{k}", "shape": {"regular": 7, "radius": 0.03},
+              "position": [0.1 + 0.065 * (k % 15), 0.1 + 0.065 * (k // 15)], "velocity": [0.2 * (k % 3 - 1), 0.0],
+              "restitution": 0.2, "friction": 0.4} for k in range(150)]
+    walls = [{"box": {"center": [0.5, -0.05], "half": [1.0, 0.05]}},
+             {"box": {"center": [-0.05, 0.5], "half": [0.05, 1.0]}},
+             {"box": {"center": [1.05, 0.5], "half": [0.05, 1.0]}}]
+    scene = Scene.model_validate({"name": "packed", "bodies": balls, "walls": walls, "gravity": [0.0, -9.81]})
+    with build_scene(scene, "balanced") as whole, build_scene(scene, "balanced") as alone:
+        fat_pairs = whole._parts[1]._by_code[BROADPHASE].fat_pairs
+        whole.step(1)
+        step_alone(alone, 1)
+        room = len(fat_pairs.pairs)
+        assert fat_pairs.outgrown()  # (the pairs were searched for every substep)
+        for _ in range(30):
+            whole.step(1)
+            step_alone(alone, 1)
+            assert np.array_equal(whole.res.bodies.state, alone.res.bodies.state)
+        assert len(fat_pairs.pairs) > room and fat_pairs.count[0] > room // 2  # more room, and pairs kept in it
+        assert not fat_pairs.outgrown()
 
 
 @pytest.mark.parametrize("name", ["hazards:6", "hazards:2", "meadow:8", "hazards:9"])  # a windmill; water;

@@ -23,6 +23,7 @@ MAX_CELLS = 256  # cells one box may be filed under
 MAX_GRID = 1 << 20  # cells in a grid; a coarser cell is taken beyond it
 FAT_MARGIN = 0.25  # m: a body's walls are looked up for its box grown by this, and kept while it stays inside
 FAT_KEEP = 32  # walls kept a body; a body with more near it asks the grid every time
+PAIR_FAT_MARGIN = 0.05  # m: bodies' boxes grown by this for the pairs kept between substeps (`FatPairs`)
 
 
 @inlined_leaf
@@ -473,15 +474,17 @@ def box_pairs(boxes: np.ndarray, active: np.ndarray) -> np.ndarray:
 
 @kernel
 def body_pairs(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, grow: float, swept: bool, meet: bool,
-               turning_is_active: bool, dynamic_pairs: bool) -> np.ndarray:
+               turning_is_active: bool, dynamic_pairs: bool, kept: tuple) -> np.ndarray:
     """Pairs (i, j) of `rows` of a `body.BodyStore` state whose boxes overlap: each body's box about
     its pose (or, `swept`, about its motion from the substep's start), its bounding radius plus
     `grow`. With `meet`, every pair of which one is active (awake and dynamic, or kinematic and
     moving; `turning_is_active`: a kinematic body that turns counts even when marked at rest), by
-    `box_pairs`, or with `dynamic_pairs` False only those with a kinematic body (for a caller that
-    knows no two dynamic bodies can need it: no search at all without a kinematic body); without
-    `meet`, only a kinematic body with an awake dynamic one (bodies that meet walls and kinematic
-    bodies only: K balls, no K² pairs). i < j, sorted."""
+    `box_pairs` (or from the pairs `kept` between substeps, `FatPairs.of`: the same pairs; empty
+    arrays: none kept), or with
+    `dynamic_pairs` False only those with a kinematic body (for a caller that knows no two dynamic
+    bodies can need it: no search at all without a kinematic body); without `meet`, only a
+    kinematic body with an awake dynamic one (bodies that meet walls and kinematic bodies only: K
+    balls, no K² pairs). i < j, sorted."""
     n = len(rows)
     if not (meet and dynamic_pairs):
         kinematic = 0
@@ -505,6 +508,8 @@ def body_pairs(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, grow: fl
         else:
             active[q] = awake and (dynamic or state[k, VX] != 0.0 or state[k, VY] != 0.0 or state[k, SPIN] != 0.0)
     if meet and dynamic_pairs:
+        if len(kept[0]) == n and n > 0:
+            return kept_box_pairs(boxes, active, kept[0], kept[1], kept[2])
         return box_pairs(boxes, active)
     # A kinematic body with each dynamic one: those `box_pairs` would give (one of the two active), or
     # without `meet` those with an awake one.
@@ -518,6 +523,82 @@ def body_pairs(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, grow: fl
                 pairs = _add_pair(pairs, count, i, j)
                 count += 1
     return _sorted_pairs(pairs, count, n)
+
+
+@kernel
+def no_fat_pairs() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """`FatPairs.of` for a caller that keeps no pairs: `body_pairs` then searches every time."""
+    return np.empty((0, 4)), np.empty((0, 2), dtype=np.int64), np.full(2, -1, dtype=np.int64)
+
+
+class FatPairs:
+    """The pairs of bodies whose fat boxes overlap, kept between substeps (as Box2D keeps a pair
+    while the bodies stay inside their fat boxes): each box grown by PAIR_FAT_MARGIN, all of them
+    at once when one leaves its own, so the next rebuild is as far off as the fastest body makes it.
+    While every body's box stays inside its fat box, every pair whose boxes overlap is among those
+    kept, and is picked from them (`kept_box_pairs`: `box_pairs`' answer) instead of searching a
+    crowd every substep. Rows are those of the indices the caller passes (`Shapes.current`'s); kept
+    until those change."""
+
+    __slots__ = ("key", "fat", "pairs", "count")
+
+    def __init__(self) -> None:
+        self.key: tuple = (None, None)
+        self.fat, self.pairs, self.count = no_fat_pairs()
+
+    def of(self, state: np.ndarray, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(fat boxes, room for the pairs, (how many are kept, or -1 if none are; how many the last
+        rebuild found)) for bodies `rows` of `state`: emptied if they changed, given more room if
+        the last rebuild found more pairs than it had."""
+        if self.key[0] is not state or self.key[1] is not rows:
+            self.key = (state, rows)
+            self.fat = np.empty((len(rows), 4))
+            self.pairs = np.empty((4 * len(rows) + 64, 2), dtype=np.int64)
+            self.count = np.array([-1, 0], dtype=np.int64)
+        elif self.outgrown():
+            self.pairs = np.empty((2 * int(self.count[1]), 2), dtype=np.int64)
+        return self.fat, self.pairs, self.count
+
+    def outgrown(self) -> bool:
+        """Whether the last rebuild found more pairs than there is room for (until `of` is asked
+        again, the pairs are searched for every substep)."""
+        return bool(self.count[1] > len(self.pairs))
+
+
+@kernel
+def kept_box_pairs(boxes: np.ndarray, active: np.ndarray, fat: np.ndarray, kept: np.ndarray, count: np.ndarray
+                   ) -> np.ndarray:
+    """`box_pairs(boxes, active)`, from the pairs of fat boxes kept (`FatPairs`): the kept ones
+    again (every fat box made anew) if a box is not inside its own, then those of them whose boxes
+    overlap, one active. Boxes not all finite go to `box_pairs` (and nothing is kept)."""
+    inside = count[0] >= 0
+    for i in range(len(boxes)):
+        if not (math.isfinite(boxes[i, 0]) and math.isfinite(boxes[i, 1]) and math.isfinite(boxes[i, 2])
+                and math.isfinite(boxes[i, 3])):
+            count[0] = -1
+            return box_pairs(boxes, active)
+        inside &= (fat[i, 0] <= boxes[i, 0]) & (fat[i, 1] <= boxes[i, 1]) & (boxes[i, 2] <= fat[i, 2]) \
+            & (boxes[i, 3] <= fat[i, 3])
+    source = kept
+    if not inside:
+        for i in range(len(boxes)):
+            fat[i, 0], fat[i, 1] = boxes[i, 0] - PAIR_FAT_MARGIN, boxes[i, 1] - PAIR_FAT_MARGIN
+            fat[i, 2], fat[i, 3] = boxes[i, 2] + PAIR_FAT_MARGIN, boxes[i, 3] + PAIR_FAT_MARGIN
+        source = box_pairs(fat, np.ones(len(boxes), dtype=np.bool_))
+        count[0], count[1] = len(source), len(source)
+        if len(source) <= len(kept):
+            kept[:len(source)] = source
+        else:  # no room: these serve this substep; the caller gives more room before the next call
+            count[0] = -1
+    total = len(source) if count[0] < 0 else count[0]
+    out = np.empty((total, 2), dtype=np.int64)
+    found = 0
+    for g in range(total):
+        i, j = source[g, 0], source[g, 1]
+        if (active[i] or active[j]) and rows_overlap(boxes, i, j):
+            out[found, 0], out[found, 1] = i, j
+            found += 1
+    return out[:found]
 
 
 @kernel
@@ -586,4 +667,7 @@ def _warm() -> None:
     box_pairs(boxes, np.ones(3, dtype=np.bool_))
     by_entity(np.array([[1, 0]], dtype=np.int64), np.array([5, 3], dtype=np.int64))
     for meet in (True, False):
-        body_pairs(state, np.zeros(1, dtype=np.int64), np.ones(1), 0.01, meet, meet, meet, meet)
+        body_pairs(state, np.zeros(1, dtype=np.int64), np.ones(1), 0.01, meet, meet, meet, meet, no_fat_pairs())
+    fat_pairs = FatPairs()
+    body_pairs(state, np.zeros(1, dtype=np.int64), np.ones(1), 0.01, False, True, False, True,
+               fat_pairs.of(state, np.zeros(1, dtype=np.int64)))

@@ -3,7 +3,7 @@ import numpy as np
 
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
-from polygolf.engine.physics.grid import bodies_near, body_pairs, by_entity
+from polygolf.engine.physics.grid import FatPairs, bodies_near, body_pairs, by_entity
 from polygolf.engine.physics.jit import inlined_kernel
 from polygolf.engine.physics.settings import CONTACT_MARGIN
 
@@ -12,8 +12,8 @@ _NO_PAIRS = np.zeros((0, 2), dtype=np.int64)
 
 class BroadphaseProcessor(esper.Processor):
     """Candidate pairs from bounding boxes (`physics.grid`): moving bodies against the walls' grid,
-    and bodies against each other. Resting bodies are not looked up at all. Reads the static index;
-    writes the candidates."""
+    and bodies against each other (picked from the pairs of fat boxes it keeps, `FatPairs`).
+    Resting bodies are not looked up at all. Reads the static index; writes the candidates."""
 
     name = "broadphase"
 
@@ -24,17 +24,19 @@ class BroadphaseProcessor(esper.Processor):
         self._seen, self._scratch = np.zeros(walls, dtype=np.bool_), np.empty(walls, dtype=np.int64)
         self._near, self._first = np.empty(0, dtype=np.int64), np.empty(1, dtype=np.int64)
         self.found = np.empty(16, dtype=np.int64)  # grown by `pick` when it must be (so passed and given back)
+        self.fat_pairs = FatPairs()
 
     def inputs(self) -> tuple:
         """What `pick` reads besides the state, the shapes, the walls, the fat boxes and the found
         walls' array: the grid query's scratch, the answer's arrays (and no pairs, to hand on when
-        there is one body), whether there are pairs to look for and whether bodies meet each other."""
+        there is one body), whether there are pairs to look for, whether bodies meet each other and
+        the pairs kept (`FatPairs.of`)."""
         bodies = esper.get_components(Body, Collider)
-        _, _, rows = self.shapes.current(self.bodies, esper.get_component(Body), bodies)
+        state, _, rows = self.shapes.current(self.bodies, esper.get_component(Body), bodies)
         if len(self._near) != len(rows):
             self._near, self._first = np.empty(len(rows), dtype=np.int64), np.empty(len(rows) + 1, dtype=np.int64)
         return (self._seen, self._scratch, self._near, self._first, _NO_PAIRS, len(bodies) > 1,
-                self.config.collide_bodies)
+                self.config.collide_bodies, self.fat_pairs.of(state, rows))
 
     def process(self) -> None:
         inputs = self.inputs()  # first: it gathers the state
@@ -53,9 +55,9 @@ def pick(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, input
     it had to). The walls' rows are views of `first` and `found`: good until the next call."""
     _, _, _, _, _, rows, radius, _, _, ents, _ = shapes
     grid = walls[5]
-    seen, scratch, near, first, no_pairs, several, meet = inputs
+    seen, scratch, near, first, no_pairs, several, meet, kept = inputs
     found, count = bodies_near(state, rows, radius, CONTACT_MARGIN, grid, fat_boxes, seen, scratch, near, first, found)
     pairs = no_pairs
     if several:
-        pairs = by_entity(body_pairs(state, rows, radius, CONTACT_MARGIN, False, meet, False, True), ents)
+        pairs = by_entity(body_pairs(state, rows, radius, CONTACT_MARGIN, False, meet, False, True, kept), ents)
     return (ents[near[:count]], first[:count + 1], found[:first[count]], pairs), found

@@ -8,7 +8,7 @@ from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.body import ANGLE, ANGLE0, INV_MASS, X0, Y0, X, Y
 from polygolf.engine.physics.collide import max_separation
 from polygolf.engine.physics.geometry import pose_piece
-from polygolf.engine.physics.grid import body_pairs, overlapping
+from polygolf.engine.physics.grid import body_pairs, no_fat_pairs, overlapping
 from polygolf.engine.physics.jit import inlined_kernel, kernel, leaf_kernel
 from polygolf.engine.physics.motion import rewind
 from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP, TOI_TARGET
@@ -97,7 +97,7 @@ def _body_hits(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple) ->
     (wv, wn, wfirst, _, _), _, _, _, _, grid = walls
     seen, found, hits, _, _, _, meet = inputs
     pairs = body_pairs(state, rows, radius, TOI_TARGET, True, meet, True,
-                       meet and _dynamic_pairs_may_step_far(state, rows, radius, thickness))
+                       meet and _dynamic_pairs_may_step_far(state, rows, radius, thickness), no_fat_pairs())
     # A is the smaller entity, as in the contact table. The rows follow esper's sets, whose order
     # changes with the other entities (with K balls the windmill's row came first): a pair's impact,
     # rounded one way or the other, would then differ between a shot alone and the same shot among K.

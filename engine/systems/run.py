@@ -230,7 +230,8 @@ def _idle_inputs() -> tuple:
         (ints, areas.verts, areas.first, areas.boxes, floats, ints.copy()),  # ice
         (ints, np.zeros((0, 4))),  # drag
         (flags, ints, floats, _no_work(), np.empty((2, 4)), False, True),  # ccd
-        (flags, ints, ints, np.zeros(1, dtype=np.int64), np.zeros((0, 2), dtype=np.int64), False, True),  # broadphase
+        (flags, ints, ints, np.zeros(1, dtype=np.int64), np.zeros((0, 2), dtype=np.int64), False, True,
+         (np.zeros((0, 4)), np.zeros((0, 2), dtype=np.int64), np.full(2, -1, dtype=np.int64))),  # broadphase
         (False, True),  # narrowphase
         (True, 1, 1, 0, True),  # resolve
         (flags, np.zeros((1, HEARD_COLUMNS)), np.zeros(1, dtype=np.int64)),  # impacts
@@ -320,6 +321,8 @@ class StageRun(esper.Processor):
         if self._finds and not self._uses:
             found = res.candidates
             found.near, found.near_first, found.near_found, found.pair_ents = held_candidates(self._held)
+        if self._finds and self._by_code[BROADPHASE].fat_pairs.outgrown():
+            self._key = ()  # its kept pairs need more room: hold its inputs again (`FatPairs.of` gives it)
         return ran
 
 

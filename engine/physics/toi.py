@@ -98,13 +98,14 @@ def _turning_rates(pa_n: np.ndarray, pb_n: np.ndarray, na_: int, nb_: int, d_x: 
 def _advance(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, start_a: np.ndarray, end_a: np.ndarray,
              lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, start_b: np.ndarray, end_b: np.ndarray,
              b_posed: bool, rates: np.ndarray, turns: float, target: float, tolerance: float, allowance: float,
-             at_start: np.ndarray, measured: bool, work: tuple) -> float:
+             at_start: np.ndarray, measured: bool, work: tuple, posed_at_start: bool = False) -> float:
     """Conservative advancement over t in [0, 1]: the first t at which the separating-axis distance
     comes within `target` (see time_of_impact for `allowance`), or NO_HIT. Axes: B's faces first
     when B is a wall (their rates given in `rates`), else A's. The axes that turn get their rates
     from where they point at each step (`_turning_rates`; `turns`: the bound on what the pieces'
     turning adds). `at_start`: the separations at t = 0 if already `measured` (the pieces are then
-    posed again, for their normals). `work`: scratch (`toi_work`).
+    posed again, for their normals, unless the scratch still holds them so: `posed_at_start`).
+    `work`: scratch (`toi_work`).
 
     Should MAX_ITERATIONS steps not decide it (a fast spin beside a face, say), a sweep that stops
     bodies short of walls (`target` > 0) is given the t reached, where the body is still safely
@@ -122,9 +123,10 @@ def _advance(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, start_a: np.nda
             seps[k] = at_start[k]
             if seps[k] > worst:
                 worst = seps[k]
-        pose_piece(lva, lna, sa, ea, start_a[0], start_a[1], start_a[2], pa_v, pa_n)
-        if not b_posed:
-            pose_piece(lvb, lnb, sb, eb, start_b[0], start_b[1], start_b[2], pb_v, pb_n)
+        if not posed_at_start:
+            pose_piece(lva, lna, sa, ea, start_a[0], start_a[1], start_a[2], pa_v, pa_n)
+            if not b_posed:
+                pose_piece(lvb, lnb, sb, eb, start_b[0], start_b[1], start_b[2], pb_v, pb_n)
     else:
         worst = _separations(lva, lna, sa, ea, start_a[0], start_a[1], start_a[2], lvb, lnb, sb, eb,
                              start_b[0], start_b[1], start_b[2], b_posed, pa_v, pa_n, pb_v, pb_n, b_posed, seps)
@@ -229,17 +231,19 @@ def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float,
 def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reach_a: float, start_a: np.ndarray,
                         end_a: np.ndarray, lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, reach_b: float,
                         start_b: np.ndarray, end_b: np.ndarray, target: float, tolerance: float, allowance: float,
-                        at_start: np.ndarray, measured: bool, work: tuple) -> float:
+                        at_start: np.ndarray, measured: bool, work: tuple, posed_at_start: bool = False) -> float:
     """The same for two pieces that both move (two bodies): every axis turns with its body, and takes
     the relative step along it, (dA - dB)·n, plus |ΔθA|·RA + |ΔθB|·RB (`_turning_rates`).
-    `at_start`: the separations at the start poses, if already `measured`."""
+    `at_start`: the separations at the start poses, if already `measured` (and the scratch's posed
+    pieces still those poses: `posed_at_start`)."""
     turns = abs(end_a[2] - start_a[2]) * reach_a + abs(end_b[2] - start_b[2]) * reach_b
-    rate = math.hypot(end_a[0] - start_a[0] - end_b[0] + start_b[0],
-                      end_a[1] - start_a[1] - end_b[1] + start_b[1]) + turns
-    if rate <= 0.0:
+    # No motion at all (the relative step's length plus the turns would be 0: a length is 0 only
+    # for a step of 0, and neither can be negative).
+    if end_a[0] - start_a[0] - end_b[0] + start_b[0] == 0.0 and end_a[1] - start_a[1] - end_b[1] + start_b[1] == 0.0 \
+            and turns == 0.0:
         return NO_HIT
     return _advance(lva, lna, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b, end_b, False, work[2], turns, target,
-                    tolerance, allowance, at_start, measured, work)
+                    tolerance, allowance, at_start, measured, work, posed_at_start)
 
 
 @inlined_leaf
@@ -455,11 +459,15 @@ def pair_reaches(lva: np.ndarray, lna: np.ndarray, fa: np.ndarray, ra: np.ndarra
             _separations(lva, lna, fa[i], fa[i + 1], pose_a[0], pose_a[1], pose_a[2], lvb, lnb, fb[j], fb[j + 1],
                          pose_b[0], pose_b[1], pose_b[2], False, posed[0], posed[1], posed[2], posed[3], False,
                          at_start)
+            fresh = True  # the scratch holds both pieces as posed at the start, until an advancement moves them
             for m in range(3):
-                if use[m] and pair_time_of_impact(lva, lna, fa[i], fa[i + 1], ra[i], pose_a, moves_a[m], lvb, lnb,
-                                                  fb[j], fb[j + 1], rb[j], pose_b, moves_b[m], -GAP_TOLERANCE,
-                                                  GAP_TOLERANCE / 2, 0.0, at_start, True, work) < 1.0:
+                if not use[m]:
+                    continue
+                if pair_time_of_impact(lva, lna, fa[i], fa[i + 1], ra[i], pose_a, moves_a[m], lvb, lnb, fb[j],
+                                       fb[j + 1], rb[j], pose_b, moves_b[m], -GAP_TOLERANCE, GAP_TOLERANCE / 2, 0.0,
+                                       at_start, True, work, fresh) < 1.0:
                     return True
+                fresh = False
     return False
 
 

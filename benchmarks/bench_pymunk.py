@@ -162,8 +162,9 @@ def main() -> None:
 
     rates = [parallel_shots(args.shots, args.preset, 3.0) for _ in range(max(1, args.repeats // 2))]
     ours, theirs = statistics.median(r[0] for r in rates), statistics.median(r[1] for r in rates)
-    print(f"{f'{args.shots} shots at once (3 s)':<30}{ours:>11.0f} bf/s{theirs:>9.0f} bf/s{theirs / ours:>8.1f}x"
-          "  (ball-frames per second; ratio = how many times faster pymunk is)")
+    ahead = f"{theirs / ours:.1f}x" if theirs >= ours else f"PolyGolf {ours / theirs:.1f}x faster"
+    print(f"{f'{args.shots} shots at once (3 s)':<30}{ours:>11.0f} bf/s{theirs:>9.0f} bf/s  {ahead}"
+          "  (ball-frames per second; a ratio as above: time per ball-frame, PolyGolf's over pymunk's)")
 
 
 if __name__ == "__main__":

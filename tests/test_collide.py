@@ -113,6 +113,45 @@ def test_wall_pieces_a_body_stays_clear_of_are_passed_over_with_the_same_rows():
     assert touched > 20 and apart > 20  # both kinds of pose were tried
 
 
+def test_body_pairs_one_stays_clear_of_are_passed_over_with_the_same_rows():
+    """`bodies_pair_contacts` passes over a pair when one body's bounding circle stays more than the
+    margin clear of every piece of the other: its rows must be those of `collide_sets` asked about
+    every pair within reach, for hexagons, stars ({5/2}: two pieces) and a long box, at random
+    poses about each other; and the pass must be taken (pairs within reach but clear of each other)."""
+    from polygolf.engine.physics.collide import BODY, NO_SEAMS, ROW, bodies_pair_contacts, collide_sets
+    from polygolf.engine.physics.geometry import pose_piece
+
+    rng = np.random.default_rng(7)
+    shapes = [polygon.regular_polygon(6, 0.45), polygon.star_polygon(5, 2, 0.45), box(0.9, 0.15)]
+    table = ShapeTable.of([ConvexSet.of(list(polygon.convex_pieces(s)), [polygon.edge_normals(p)
+                                        for p in polygon.convex_pieces(s)]) for s in shapes])
+    lv, ln, first, body_first = table.pieces.verts, table.pieces.normals, table.pieces.first, table.body_first
+    radius = np.array([polygon.bounding_radius(s) for s in shapes])
+    margin, touched, clear_within_reach = 0.01, 0, 0
+    for _ in range(600):
+        a, b = (int(k) for k in rng.choice(3, size=2, replace=False))
+        poses = np.zeros((3, 3))
+        poses[a] = 0.0, 0.0, rng.uniform(-3.2, 3.2)
+        distance, bearing = rng.uniform(0.0, radius[a] + radius[b] + margin), rng.uniform(-3.2, 3.2)
+        poses[b] = distance * math.cos(bearing), distance * math.sin(bearing), rng.uniform(-3.2, 3.2)
+        pair = np.array([[a, b]], dtype=np.int64)
+        rows, _, pairs, _ = bodies_pair_contacts(lv, ln, first, body_first, pair, poses, radius, margin)
+        verts, normals = np.zeros((len(lv), 2)), np.zeros((len(lv), 2))
+        for q in (a, b):
+            v0, v1 = first[body_first[q]], first[body_first[q + 1]]
+            pose_piece(lv, ln, v0, v1, *poses[q], verts[v0:v1], normals[v0:v1])
+        a0, a1, b0, b1 = body_first[a], body_first[a + 1], body_first[b], body_first[b + 1]
+        out = np.empty((2 * (a1 - a0) * (b1 - b0), ROW))
+        made = collide_sets(verts, normals, first[a0:a1 + 1], verts, normals, first[b0:b1 + 1],
+                            np.arange(b1 - b0, dtype=np.int64), NO_SEAMS, NO_SEAMS, False, margin, False, out,
+                            np.empty((3, 3)))
+        assert np.array_equal(rows[:, :BODY], out[:made, :BODY])
+        assert len(pairs) == (made > 0)
+        touched += made > 0
+        clear_within_reach += made == 0
+    assert touched > 50 and clear_within_reach > 50  # both kinds of pose were tried
+
+
 def test_a_length_compared_with_a_bound_is_judged_as_the_exact_one_would_be():
     """`toi.length_near` takes the cheaper square root of the sum of squares for `math.hypot` only
     away from the bounds its caller compares it with: on either side of the bound, in the band

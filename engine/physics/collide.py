@@ -260,6 +260,19 @@ def _circle_beyond(wv: np.ndarray, wn: np.ndarray, s: int, e: int, x: float, y: 
 
 
 @leaf_kernel
+def _clear_of(verts: np.ndarray, normals: np.ndarray, first: np.ndarray, p0: int, p1: int, x: float, y: float,
+              reach: float) -> bool:
+    """Whether the point (x, y) lies more than `reach` beyond some face of each of the posed pieces
+    p0..p1 (rows `first`): a body about it of bounding radius r is then more than `reach` - r clear
+    of every one of them, and `collide_convex` would find that face a separating axis for each piece
+    of it (no row at all)."""
+    clear = True
+    for p in range(p0, p1):
+        clear &= _circle_beyond(verts, normals, first[p], first[p + 1], x, y, reach)
+    return clear
+
+
+@leaf_kernel
 def _any_close(wv: np.ndarray, wn: np.ndarray, wall_first: np.ndarray, which: np.ndarray, radius: np.ndarray,
                states: np.ndarray, near_first: np.ndarray, near: np.ndarray, margin: float) -> bool:
     """Whether any body of `bodies_wall_contacts` has a wall piece near it that its bounding circle
@@ -371,7 +384,9 @@ def _pair_rows(first: np.ndarray, body_first: np.ndarray, pairs: np.ndarray, pos
                every: np.ndarray, clip: np.ndarray) -> tuple[int, int]:
     """`bodies_pair_contacts`' work into its arrays; how many rows and how many pairs have some. (A
     leaf: the views it takes cost nothing, so each pair within reach goes to `collide_sets`, whose
-    separating axes answer first for pieces that are apart.)"""
+    separating axes answer first for pieces that are apart.) A pair one of whose bodies' bounding
+    circles stays more than the margin clear of every piece of the other is passed over before its
+    separating axes (`_clear_of`: the face it stays beyond is one of them, so no row would come)."""
     rows = t = 0
     for g in range(len(pairs)):
         a, b = pairs[g, 0], pairs[g, 1]
@@ -385,6 +400,10 @@ def _pair_rows(first: np.ndarray, body_first: np.ndarray, pairs: np.ndarray, pos
                 pose_piece(lv, ln, v0, v1, poses[q, 0], poses[q, 1], poses[q, 2], posed_v[v0:v1], posed_n[v0:v1])
                 posed[q] = True
         a0, a1, b0, b1 = body_first[a], body_first[a + 1], body_first[b], body_first[b + 1]
+        if _clear_of(posed_v, posed_n, first, a0, a1, poses[b, 0], poses[b, 1], radius[b] + margin + _CIRCLE_SLACK) \
+                or _clear_of(posed_v, posed_n, first, b0, b1, poses[a, 0], poses[a, 1],
+                             radius[a] + margin + _CIRCLE_SLACK):
+            continue
         made = collide_sets(posed_v, posed_n, first[a0:a1 + 1], posed_v, posed_n, first[b0:b1 + 1], every[:b1 - b0],
                             NO_SEAMS, NO_SEAMS, False, margin, False, out[rows:], clip)
         if made == 0:

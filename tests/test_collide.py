@@ -74,8 +74,9 @@ def test_time_of_impact_head_on_and_miss():
 
 def test_wall_pieces_a_body_stays_clear_of_are_passed_over_with_the_same_rows():
     """`bodies_wall_contacts` skips the near pieces its bounding circle stays more than the margin
-    clear of: its rows must be those of `wall_contacts` asked about every near piece, for a hexagon
-    and a star ({5/2}: two convex pieces) anywhere about slanted and square wall pieces."""
+    clear of, and those with a face the whole body lies more than the margin beyond (asked in the
+    body's frame): its rows must be those of `wall_contacts` asked about every near piece, for a
+    hexagon and a star ({5/2}: two convex pieces) anywhere about slanted and square wall pieces."""
     from polygolf.engine.physics.collide import BODY, ROW, bodies_wall_contacts, wall_contacts
     from polygolf.engine.physics.geometry import ShapeTable, pose_piece
 

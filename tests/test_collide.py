@@ -72,6 +72,41 @@ def test_time_of_impact_head_on_and_miss():
     assert toi((2.0, 3.0, 0.0), (-2.0, 3.0, 0.0)) >= 1.0
 
 
+def test_time_of_impact_s_quick_answers_are_the_advancement_s_own():
+    """Before advancing, `time_of_impact` answers NO_HIT where the piece's bounding circle, or the
+    piece itself (its separations asked in its own frame), stays beyond a face of the wall farther
+    than the motion can close: each answer must be the one the advancement alone gives, for a
+    hexagon and a star's pieces moving and turning about a slanted and a square wall piece, for
+    continuous collision's target and the gap test's (and both kinds of answer must come up)."""
+    from polygolf.engine.physics.toi import _NOWHERE, NO_HIT, _advance, wall_out_of_reach
+
+    rng = np.random.default_rng(5)
+    walls = [box(1.5, 0.1), [(0.4, 0.3), (1.8, 0.3), (0.4, 1.6)]]
+    wall = ConvexSet.of(walls, [polygon.edge_normals(w) for w in walls])
+    pieces = [polygon.regular_polygon(6, 0.3), *polygon.convex_pieces(polygon.star_polygon(5, 2, 0.35))]
+    body = ConvexSet.of(pieces, [polygon.edge_normals(p) for p in pieces])
+    work = toi_work(6)
+    quick, advanced, hits = 0, 0, 0
+    for _ in range(3000):
+        i, g = int(rng.integers(len(pieces))), int(rng.integers(len(walls)))
+        s, e, ws, we = body.first[i], body.first[i + 1], wall.first[g], wall.first[g + 1]
+        start = np.array([rng.uniform(-2.0, 2.0), rng.uniform(-0.5, 2.0), rng.uniform(-3.2, 3.2)])
+        end = start + np.array([*rng.normal(0.0, 0.15, 2), rng.normal(0.0, 0.3)])
+        for target, tolerance, allowance in ((0.005, 0.00125, 0.005), (-1e-4, 5e-5, 0.0)):
+            got = time_of_impact(body.verts, body.normals, s, e, body.reach[i], start, end, wall.verts, wall.normals,
+                                 ws, we, target, tolerance, allowance, work)
+            rates = np.empty(len(work[2]))  # (the advancement writes the piece's faces' rates after the wall's)
+            wall_out_of_reach(body.reach[i], start, end, wall.verts, wall.normals, ws, we, target, tolerance, rates)
+            alone = _advance(body.verts, body.normals, s, e, start, end, wall.verts, wall.normals, ws, we, _NOWHERE,
+                             _NOWHERE, True, rates, abs(end[2] - start[2]) * body.reach[i], target, tolerance,
+                             allowance, rates, False, work)
+            assert got == alone
+            quick += got == NO_HIT
+            hits += got < 1.0
+            advanced += 1
+    assert quick > 500 and hits > 100  # both answers, many times
+
+
 def test_wall_pieces_a_body_stays_clear_of_are_passed_over_with_the_same_rows():
     """`bodies_wall_contacts` skips the near pieces its bounding circle stays more than the margin
     clear of, and those with a face the whole body lies more than the margin beyond (asked in the

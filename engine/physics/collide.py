@@ -22,7 +22,7 @@ import numpy as np
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
 from polygolf.engine.physics.jit import inlined_leaf, kernel, leaf_kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
-from polygolf.engine.physics.toi import reaches_wall, toi_work, widest
+from polygolf.engine.physics.toi import reaches_wall, separations_in_body_frame, toi_work, widest
 
 # Prefer polygon A's face unless B's is clearly better: stops the reference face flickering between
 # the two polygons when they are nearly parallel, which would spoil warm starting.
@@ -260,27 +260,6 @@ def _circle_beyond(wv: np.ndarray, wn: np.ndarray, s: int, e: int, x: float, y: 
 
 
 @leaf_kernel
-def _beyond_a_face(lv: np.ndarray, s: int, e: int, x: float, y: float, c: float, sn: float, wv: np.ndarray,
-                   wn: np.ndarray, ws: int, we: int, reach: float) -> bool:
-    """Whether every vertex of a body's piece (rows s..e, body frame; the body at (x, y), turned by
-    the angle whose cosine and sine are c, sn) lies more than `reach` beyond some face of the wall
-    piece of rows ws..we: each face's normal is turned into the body's frame rather than the piece
-    into the world (the same separations as `max_separation` of the posed piece, to rounding, which
-    the caller's slack in `reach` covers)."""
-    clear = False
-    for k in range(ws, we):
-        nx, ny = wn[k, 0], wn[k, 1]
-        lx, ly = c * nx + sn * ny, c * ny - sn * nx  # the normal in the body's frame
-        lowest = math.inf
-        for j in range(s, e):
-            d = lv[j, 0] * lx + lv[j, 1] * ly
-            if d < lowest:
-                lowest = d
-        clear |= (x - wv[k, 0]) * nx + (y - wv[k, 1]) * ny + lowest > reach
-    return clear
-
-
-@leaf_kernel
 def _clear_of(verts: np.ndarray, normals: np.ndarray, first: np.ndarray, p0: int, p1: int, x: float, y: float,
               reach: float) -> bool:
     """Whether the point (x, y) lies more than `reach` beyond some face of each of the posed pieces
@@ -346,8 +325,9 @@ def _wall_rows(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndar
     """`bodies_wall_contacts`' work, into `out`; how many rows. (A leaf: the views it takes of a
     body's rows cost nothing, so each close wall piece goes to `wall_contacts` as it is, whose
     separating axes answer first for a piece the body is clear of.) A piece the body's bounding
-    circle stays clear of, or some face of which the whole body lies beyond (`_beyond_a_face`),
-    is passed over first, and a body with no other piece close is not posed at all."""
+    circle stays clear of, or some face of which the whole body lies beyond (asked in the body's
+    frame, `toi.separations_in_body_frame`), is passed over first, and a body with no other piece
+    close is not posed at all."""
     kept = 0
     wv, wn, wf = walls[0], walls[1], walls[2]
     for q in range(len(which)):
@@ -366,12 +346,16 @@ def _wall_rows(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndar
         # separating axes, asked without posing the body) make no row either.
         c, sn = math.cos(angle), math.sin(angle)
         left = 0
+        seps = work[1]
         for m in range(count):
             g = close[m]
             clear = True
             for i in range(p0, p1):
-                clear &= _beyond_a_face(lv, first[i], first[i + 1], x, y, c, sn, wv, wn, wf[g], wf[g + 1],
-                                        margin + _CIRCLE_SLACK)
+                separations_in_body_frame(lv, first[i], first[i + 1], x, y, c, sn, wv, wn, wf[g], wf[g + 1], seps)
+                past = False
+                for k in range(wf[g + 1] - wf[g]):
+                    past |= seps[k] > margin + _CIRCLE_SLACK
+                clear &= past
             if not clear:
                 close[left] = g
                 left += 1

@@ -201,6 +201,25 @@ def wall_out_of_reach(reach: float, start: np.ndarray, end: np.ndarray, wv: np.n
     return beyond
 
 
+@inlined_leaf
+def separations_in_body_frame(lv: np.ndarray, s: int, e: int, x: float, y: float, c: float, sn: float,
+                              wv: np.ndarray, wn: np.ndarray, ws: int, we: int, out: np.ndarray) -> None:
+    """How far a body's piece (rows s..e of its own frame; the body at (x, y), turned by the angle
+    whose cosine and sine are c, sn) lies beyond each face of a wall piece (rows ws..we), into
+    out[0:]: each face's normal turned into the body's frame rather than the piece into the world,
+    so the body need not be posed (the separations `_face_separations` finds of the posed piece, to
+    rounding: a caller deciding by them leaves room for it)."""
+    for k in range(ws, we):
+        nx, ny = wn[k, 0], wn[k, 1]
+        lx, ly = c * nx + sn * ny, c * ny - sn * nx
+        lowest = math.inf
+        for j in range(s, e):
+            d = lv[j, 0] * lx + lv[j, 1] * ly
+            if d < lowest:
+                lowest = d
+        out[k - ws] = (x - wv[k, 0]) * nx + (y - wv[k, 1]) * ny + lowest
+
+
 @leaf_kernel
 def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float, start: np.ndarray,
                    end: np.ndarray, wv: np.ndarray, wn: np.ndarray, ws: int, we: int, target: float, tolerance: float,
@@ -221,6 +240,18 @@ def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float,
         return NO_HIT
     rates = work[2]
     if wall_out_of_reach(reach, start, end, wv, wn, ws, we, target, tolerance, rates):
+        return NO_HIT
+    # The same along the wall's faces with the piece itself in place of its bounding circle: the
+    # advancement's first step along such a face passes 1 (its level is `target`, the face being
+    # beyond it), which is its answer, NO_HIT.
+    seps = work[1]
+    separations_in_body_frame(lv, s, e, start[0], start[1], math.cos(start[2]), math.sin(start[2]), wv, wn, ws, we,
+                              seps)
+    clear = target + tolerance + _CLEARANCE
+    beyond = False
+    for k in range(we - ws):
+        beyond |= seps[k] - rates[k] > clear
+    if beyond:
         return NO_HIT
     # The piece's own faces turn with it: the advancement gives them their rates as they point.
     return _advance(lv, ln, s, e, start, end, wv, wn, ws, we, _NOWHERE, _NOWHERE, True, rates, turn, target,

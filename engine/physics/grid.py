@@ -607,17 +607,16 @@ def by_entity(pairs: np.ndarray, ents: np.ndarray) -> np.ndarray:
     order, whatever order the bodies were listed in."""
     out = np.empty((len(pairs), 2), dtype=np.int64)
     top = 0
+    ordered = True
     for g in range(len(pairs)):
         a, b = ents[pairs[g, 0]], ents[pairs[g, 1]]
         out[g, 0], out[g, 1] = min(a, b), max(a, b)
         top = max(top, out[g, 1])
-    keys = out[:, 0] * (top + 1) + out[:, 1]
-    ordered = True
-    for g in range(len(keys) - 1):
-        ordered &= keys[g] < keys[g + 1]
+        if g:
+            ordered &= out[g - 1, 0] < out[g, 0] or (out[g - 1, 0] == out[g, 0] and out[g - 1, 1] < out[g, 1])
     if ordered:  # the entities ascend with the indices (as esper lists them): sorted already
         return out
-    return _decoded(np.sort(keys), top + 1)
+    return _decoded(np.sort(out[:, 0] * (top + 1) + out[:, 1]), top + 1)
 
 
 class BoxGrid:

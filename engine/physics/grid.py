@@ -525,7 +525,6 @@ def body_pairs(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, grow: fl
     return _sorted_pairs(pairs, count, n)
 
 
-@kernel
 def no_fat_pairs() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """`FatPairs.of` for a caller that keeps no pairs: `body_pairs` then searches every time."""
     return np.empty((0, 4)), np.empty((0, 2), dtype=np.int64), np.full(2, -1, dtype=np.int64)

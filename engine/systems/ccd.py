@@ -37,11 +37,12 @@ class CCDProcessor(esper.Processor):
         self._boxes = np.empty((2, 4))  # a body's swept box and its grown box (the grid query's)
         self._work: tuple = ()  # the time of impact's scratch, for the widest piece of a body or a wall
         self._table = None  # the shape table it is for
+        self._no_kept = no_fat_pairs()  # its pair sweep keeps no pairs between substeps (made once)
 
     def inputs(self) -> tuple:
         """What `sweep` reads besides the state, the shapes, the walls and the fat boxes: the grid
         query's scratch, the times of impact's array and scratch, room for two boxes, whether
-        there are pairs to sweep and whether bodies meet each other."""
+        there are pairs to sweep, whether bodies meet each other and no kept pairs."""
         bodies = esper.get_components(Body, Collider)
         _, table, rows = self.shapes.current(self.bodies, esper.get_component(Body), bodies)
         if len(self._hits) != len(rows):
@@ -50,7 +51,7 @@ class CCDProcessor(esper.Processor):
             widest = max(np.diff(table.pieces.first).max(initial=0), np.diff(self.statics.pieces.first).max(initial=0))
             self._work, self._table = toi_work(int(widest)), table
         return (self._seen, self._found, self._hits, self._work, self._boxes, len(bodies) > 1,
-                self.config.collide_bodies)
+                self.config.collide_bodies, self._no_kept)
 
     def process(self) -> None:
         inputs = self.inputs()  # first: it gathers the state
@@ -75,7 +76,7 @@ def _sweep_walls(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tupl
     """Every body against the walls its motion sweeps (`toi.first_wall_hits`)."""
     lv, ln, first, reach, body_first, rows, radius, _, _, _, _ = shapes
     (wv, wn, wfirst, _, _), _, _, _, _, grid = walls
-    seen, found, hits, work, boxes, _, _ = inputs
+    seen, found, hits, work, boxes, _, _, _ = inputs
     # No pair can need sweeping while no body steps half the linear slop.
     return first_wall_hits(lv, ln, first, reach, body_first, state, rows, radius, LINEAR_SLOP, grid, fat_boxes, seen,
                            found, wv, wn, wfirst, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP, 0.5 * LINEAR_SLOP, hits,
@@ -95,9 +96,9 @@ def _body_hits(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple) ->
     crush the ball it meets stalls too. Returns how many pairs hit."""
     lv, ln, first, reach, body_first, rows, radius, thickness, _, ents, _ = shapes
     (wv, wn, wfirst, _, _), _, _, _, _, grid = walls
-    seen, found, hits, _, _, _, meet = inputs
+    seen, found, hits, _, _, _, meet, no_kept = inputs
     pairs = body_pairs(state, rows, radius, TOI_TARGET, True, meet, True,
-                       meet and _dynamic_pairs_may_step_far(state, rows, radius, thickness), no_fat_pairs())
+                       meet and _dynamic_pairs_may_step_far(state, rows, radius, thickness), no_kept)
     # A is the smaller entity, as in the contact table. The rows follow esper's sets, whose order
     # changes with the other entities (with K balls the windmill's row came first): a pair's impact,
     # rounded one way or the other, would then differ between a shot alone and the same shot among K.

@@ -36,7 +36,7 @@ from polygolf.engine.components.resources import (
 from polygolf.engine.physics.body import COLUMNS, BodyStore
 from polygolf.engine.physics.contact import ContactTable
 from polygolf.engine.physics.geometry import Areas
-from polygolf.engine.physics.grid import FatBoxes
+from polygolf.engine.physics.grid import FatBoxes, no_fat_pairs
 from polygolf.engine.physics.jit import COMPILED, kernel, numba, warm_up
 from polygolf.engine.physics.motion import accelerate, drag, kinetic_energy, turn
 from polygolf.engine.systems.broadphase import BroadphaseProcessor, pick
@@ -229,9 +229,9 @@ def _idle_inputs() -> tuple:
         (ints, areas.verts, areas.first, areas.boxes, floats, ints.copy()),  # sand
         (ints, areas.verts, areas.first, areas.boxes, floats, ints.copy()),  # ice
         (ints, np.zeros((0, 4))),  # drag
-        (flags, ints, floats, _no_work(), np.empty((2, 4)), False, True),  # ccd
+        (flags, ints, floats, _no_work(), np.empty((2, 4)), False, True, no_fat_pairs()),  # ccd
         (flags, ints, ints, np.zeros(1, dtype=np.int64), np.zeros((0, 2), dtype=np.int64), False, True,
-         (np.zeros((0, 4)), np.zeros((0, 2), dtype=np.int64), np.full(2, -1, dtype=np.int64))),  # broadphase
+         no_fat_pairs()),  # broadphase
         (False, True),  # narrowphase
         (True, 1, 1, 0, True),  # resolve
         (flags, np.zeros((1, HEARD_COLUMNS)), np.zeros(1, dtype=np.int64)),  # impacts

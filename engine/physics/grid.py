@@ -4,8 +4,10 @@
 or this substep's windmill arms); a query looks only at the cells its own box touches, so the work
 grows with the neighbourhood, not with the number of boxes. Neither can blow up: a box spanning more
 than MAX_CELLS cells is kept on a short list every query checks, and a query spanning more cells
-than there are boxes checks the boxes instead. `box_pairs` sweeps a set of boxes sorted along x (the
-bodies, which move every substep, so no grid is kept for them).
+than there are boxes checks the boxes instead. `box_pairs` pairs a set of boxes (the bodies, which
+move every substep): a few swept along x, a crowd filed afresh in a grid of its own. Between substeps
+the bodies keep their walls (`FatBoxes`) and their pairs (`FatPairs`) while their boxes stay inside
+fat ones, so the grid is asked, and a crowd searched, only when a box leaves.
 
 Boxes are rows (min x, min y, max x, max y) of a float64 array; answers are row indices, ascending.
 """
@@ -479,12 +481,11 @@ def body_pairs(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, grow: fl
     its pose (or, `swept`, about its motion from the substep's start), its bounding radius plus
     `grow`. With `meet`, every pair of which one is active (awake and dynamic, or kinematic and
     moving; `turning_is_active`: a kinematic body that turns counts even when marked at rest), by
-    `box_pairs` (or from the pairs `kept` between substeps, `FatPairs.of`: the same pairs; empty
-    arrays: none kept), or with
-    `dynamic_pairs` False only those with a kinematic body (for a caller that knows no two dynamic
-    bodies can need it: no search at all without a kinematic body); without `meet`, only a
-    kinematic body with an awake dynamic one (bodies that meet walls and kinematic bodies only: K
-    balls, no K² pairs). i < j, sorted."""
+    `box_pairs` (or from the pairs `kept` between substeps, `FatPairs.of`: the same pairs;
+    `no_fat_pairs()`: none kept), or with `dynamic_pairs` False only those with a kinematic body
+    (for a caller that knows no two dynamic bodies can need it: no search at all without a
+    kinematic body); without `meet`, only a kinematic body with an awake dynamic one (bodies that
+    meet walls and kinematic bodies only: K balls, no K² pairs). i < j, sorted."""
     n = len(rows)
     if not (meet and dynamic_pairs):
         kinematic = 0

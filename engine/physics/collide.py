@@ -22,7 +22,13 @@ import numpy as np
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
 from polygolf.engine.physics.jit import inlined_leaf, kernel, leaf_kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
-from polygolf.engine.physics.toi import reaches_wall, separations_in_body_frame, toi_work, widest
+from polygolf.engine.physics.toi import (
+    reaches_wall,
+    separations_in_body_frame,
+    toi_work,
+    wall_beyond_body_faces,
+    widest,
+)
 
 # Prefer polygon A's face unless B's is clearly better: stops the reference face flickering between
 # the two polygons when they are nearly parallel, which would spoil warm starting.
@@ -325,9 +331,9 @@ def _wall_rows(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndar
     """`bodies_wall_contacts`' work, into `out`; how many rows. (A leaf: the views it takes of a
     body's rows cost nothing, so each close wall piece goes to `wall_contacts` as it is, whose
     separating axes answer first for a piece the body is clear of.) A piece the body's bounding
-    circle stays clear of, or some face of which the whole body lies beyond (asked in the body's
-    frame, `toi.separations_in_body_frame`), is passed over first, and a body with no other piece
-    close is not posed at all."""
+    circle stays clear of, or separated from the body by a face of either more than the margin (asked
+    in the body's frame, `toi.separations_in_body_frame`, `toi.wall_beyond_body_faces`), is passed
+    over first, and a body with no other piece close is not posed at all."""
     kept = 0
     wv, wn, wf = walls[0], walls[1], walls[2]
     for q in range(len(which)):
@@ -342,8 +348,9 @@ def _wall_rows(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndar
         if count == 0:
             continue
         p0, p1 = body_first[which[q]], body_first[which[q] + 1]
-        # Of those, the pieces some face of which every piece of the body lies beyond (the wall's
-        # separating axes, asked without posing the body) make no row either.
+        # Of those, the pieces some face of which every piece of the body lies beyond, or that lie
+        # beyond a face of every piece of the body (the separating axes, asked without posing the
+        # body), make no row either.
         c, sn = math.cos(angle), math.sin(angle)
         left = 0
         seps = work[1]
@@ -355,6 +362,9 @@ def _wall_rows(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndar
                 past = False
                 for k in range(wf[g + 1] - wf[g]):
                     past |= seps[k] > margin + _CIRCLE_SLACK
+                if not past:  # or beyond a face of the body's piece
+                    past = wall_beyond_body_faces(lv, ln, first[i], first[i + 1], x, y, c, sn, wv, wf[g], wf[g + 1],
+                                                  work[0][0]) > margin + _CIRCLE_SLACK
                 clear &= past
             if not clear:
                 close[left] = g

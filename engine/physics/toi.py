@@ -220,6 +220,31 @@ def separations_in_body_frame(lv: np.ndarray, s: int, e: int, x: float, y: float
         out[k - ws] = (x - wv[k, 0]) * nx + (y - wv[k, 1]) * ny + lowest
 
 
+@inlined_leaf
+def wall_beyond_body_faces(lv: np.ndarray, ln: np.ndarray, s: int, e: int, x: float, y: float, c: float, sn: float,
+                           wv: np.ndarray, ws: int, we: int, local: np.ndarray) -> float:
+    """How far a wall piece (rows ws..we) lies beyond the nearest-to-separating face of a body's piece
+    (rows s..e of its own frame; the body at (x, y), turned by the angle whose cosine and sine are
+    c, sn): the largest over the piece's faces of the wall's least separation from it, the wall's
+    vertices turned into the body's frame (into `local`) rather than the piece into the world (what
+    `collide.max_separation` finds of the posed piece, to rounding: a caller deciding by it leaves
+    room for it)."""
+    for k in range(ws, we):
+        dx, dy = wv[k, 0] - x, wv[k, 1] - y
+        local[k - ws, 0], local[k - ws, 1] = c * dx + sn * dy, c * dy - sn * dx
+    best = -math.inf
+    for i in range(s, e):
+        nx, ny, vx, vy = ln[i, 0], ln[i, 1], lv[i, 0], lv[i, 1]
+        lowest = math.inf
+        for k in range(we - ws):
+            d = (local[k, 0] - vx) * nx + (local[k, 1] - vy) * ny
+            if d < lowest:
+                lowest = d
+        if lowest > best:
+            best = lowest
+    return best
+
+
 @leaf_kernel
 def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float, start: np.ndarray,
                    end: np.ndarray, wv: np.ndarray, wn: np.ndarray, ws: int, we: int, target: float, tolerance: float,

@@ -7,7 +7,7 @@ import math
 import time
 
 import numpy as np
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from polygolf.engine.loading.scene import Scene, build_scene
@@ -107,6 +107,7 @@ def test_walls_kept_in_fat_boxes_are_the_grids_answer_as_bodies_move(items, step
 @given(st.lists(st.tuples(st.floats(-3, 3), st.floats(-3, 3), st.floats(0.05, 0.6)), min_size=2, max_size=80),
        st.lists(st.tuples(st.integers(0, 79), st.floats(-0.3, 0.3), st.floats(-0.3, 0.3),
                           st.sampled_from(["move", "sleep", "wake", "vanish"])), min_size=1, max_size=40))
+@example([(0.0, 0.0, 0.1), (1.0, 0.0, 0.1)], [(0, 0.3, 0.0, "move")] * 3)  # out of its fat box, onto the other
 def test_pairs_kept_in_fat_boxes_are_every_pair_as_bodies_move(bodies, moves):
     """A crowd of up to 80 bodies, one moved (by up to 0.3 m: inside its fat box or out of it), put
     to sleep, woken or sent to infinity or NaN at a time: the pairs picked from those kept between

@@ -579,18 +579,18 @@ def kept_box_pairs(boxes: np.ndarray, active: np.ndarray, fat: np.ndarray, kept:
             return box_pairs(boxes, active)
         inside &= (fat[i, 0] <= boxes[i, 0]) & (fat[i, 1] <= boxes[i, 1]) & (boxes[i, 2] <= fat[i, 2]) \
             & (boxes[i, 3] <= fat[i, 3])
-    source = kept
+    source, total = kept, count[0]
     if not inside:
         for i in range(len(boxes)):
             fat[i, 0], fat[i, 1] = boxes[i, 0] - PAIR_FAT_MARGIN, boxes[i, 1] - PAIR_FAT_MARGIN
             fat[i, 2], fat[i, 3] = boxes[i, 2] + PAIR_FAT_MARGIN, boxes[i, 3] + PAIR_FAT_MARGIN
         source = box_pairs(fat, np.ones(len(boxes), dtype=np.bool_))
-        count[0], count[1] = len(source), len(source)
-        if len(source) <= len(kept):
-            kept[:len(source)] = source
+        total = len(source)
+        count[0], count[1] = total, total
+        if total <= len(kept):
+            kept[:total] = source
         else:  # no room: these serve this substep; the caller gives more room before the next call
             count[0] = -1
-    total = len(source) if count[0] < 0 else count[0]
     out = np.empty((total, 2), dtype=np.int64)
     found = 0
     for g in range(total):

@@ -15,8 +15,8 @@ import esper
 import numpy as np
 
 from polygolf.engine.assembly.assemble import assemble
-from polygolf.engine.assembly.spec import WallPart
-from polygolf.engine.components import Ball, Body, HoleState, Material, ShotInput
+from polygolf.engine.assembly.spec import DynamicPart, WallPart
+from polygolf.engine.components import Ball, Body, Collider, HoleState, Material
 from polygolf.engine.golf.holes import Hole
 from polygolf.engine.golf.world import DEFAULT_BALL, hole_spec
 from polygolf.engine.loading.scene import ShapeSpec
@@ -26,6 +26,7 @@ from polygolf.engine.physics.polygon import Outline
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import FRAME_DT
 from polygolf.engine.physics.shot import clamp_arrow
+from polygolf.engine.systems.shot import push_resting
 
 
 @dataclass(frozen=True)
@@ -86,10 +87,13 @@ def simulate_shots(hole: Hole, shots: Sequence[Shot], preset: Knobs | str = "bal
         return []
     alone = hole_spec(hole, shape)
     template = alone.bodies[0]
-    requests = [ShotInput() for _ in shots]
-    balls = [replace(template, name=f"shot-{k}", position=s.start, angle=s.angle, asleep=True,
-                     extras=(Ball(*s.start), request, HoleState(par=hole.spec.par, max_strokes=99)))
-             for k, (s, request) in enumerate(zip(shots, requests))]
+    # Every ball rests at its shot's start until the shot pushes it (the shot stage's push, given
+    # before the first step, as that stage gives it at the start of the first frame of a shot played
+    # alone); each is built as the template with its own place, not by `dataclasses.replace`.
+    balls = [DynamicPart(f"shot-{k}", template.outline, s.start, template.density, template.material, s.angle,
+                         template.velocity, template.spin, template.drag, True, template.top_speed,
+                         (Ball(*s.start), HoleState(par=hole.spec.par, max_strokes=99)))
+             for k, s in enumerate(shots)]
     turned = [replace(part, angle=angle) for part, angle in zip(alone.kinematic, windmills)]
     walls = alone.walls + [WallPart(tuple(outline), Material()) for outline in obstacles]
     # Impacts only tell a listener what was struck: without a path, nobody listens (and a fan strikes
@@ -101,9 +105,10 @@ def simulate_shots(hole: Hole, shots: Sequence[Shot], preset: Knobs | str = "bal
         esper.switch_world(sim.world)
         # Entity order = shots' order; scoring asks esper the same question (one list for both).
         rows = sorted(esper.get_components(Body, Ball, HoleState))
-        for request, shot in zip(requests, shots):  # (each ball lies at its shot's start)
+        radius = esper.component_for_entity(rows[0][0], Collider).radius
+        for (_, (body, _, _)), shot in zip(rows, shots):
             arrow = clamp_arrow(shot.arrow) or (0.0, 0.0)
-            request.request((shot.start[0] + shot.grab[0], shot.start[1] + shot.grab[1]), arrow)
+            push_resting(body, radius, (shot.start[0] + shot.grab[0], shot.start[1] + shot.grab[1]), arrow)
         done: list[float | None] = [None] * len(shots)
         paths: list[list[tuple[float, float]]] = [[] for _ in shots]
         contact: list[int | None] = [None] * len(shots)

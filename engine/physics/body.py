@@ -71,7 +71,7 @@ class BodyScratch(_Row):
 class Body(_Row):
     """Rigid-body state about the centroid. Static and kinematic bodies have zero inverse mass."""
 
-    __slots__ = ("scratch",)
+    __slots__ = ()
     x = _column(X, "m")
     y = _column(Y, "m")
     angle = _column(ANGLE, "radians, counter-clockwise")
@@ -92,9 +92,14 @@ class Body(_Row):
                               1.0 if asleep else 0.0, 0.0, x, y, angle, 0.0, 0.0, 1.0], dtype=np.float64))
 
     def _point(self, row: np.ndarray) -> None:
-        """Make this handle (and its scratch) read and write `row`."""
+        """Make this handle read and write `row`."""
         self._row = row
-        self.scratch = BodyScratch(row)
+
+    @property
+    def scratch(self) -> BodyScratch:
+        """The same row's working values (a handle made when asked: a world of a thousand bodies
+        is built and gathered without one)."""
+        return BodyScratch(self._row)
 
     @classmethod
     def dynamic(cls, x: float, y: float, mass: float, inertia: float, **state: float) -> Body:

@@ -7,6 +7,22 @@ from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.shot import shot_velocity
 
 
+def push_resting(body: Body, radius: float, origin: tuple[float, float], vector: tuple[float, float]) -> float | None:
+    """A shot on a body of bounding radius `radius`: pushed at `origin` along the arrow `vector`,
+    but only while it rests. Returns the speed it was given (0.0 for a click: nothing given), or
+    None if it was moving. (The one way a shot moves a ball: the shot stage's, and a fan's, whose
+    balls all rest when it begins.)"""
+    x, y, _, vx, vy, spin, mass, inertia, _, inv_inertia = body.motion()
+    if not (body.asleep or (vx == 0.0 and vy == 0.0 and spin == 0.0)):
+        return None
+    dvx, dvy, dspin = shot_velocity(mass, inertia, radius, origin[0] - x, origin[1] - y, *vector,
+                                    rotates=inv_inertia > 0.0)
+    if dvx == 0.0 and dvy == 0.0:
+        return 0.0
+    body.push(dvx, dvy, dspin)
+    return math.hypot(dvx, dvy)
+
+
 class ShotProcessor(esper.Processor):
     """Turns a requested shot into velocity, only while the ball is at rest; remembers that resting
     place and says so ("shot": the scoring stage counts it)."""
@@ -29,18 +45,16 @@ class ShotProcessor(esper.Processor):
             if not shot.pending:
                 continue
             shot.pending = False
-            x, y, _, vx, vy, spin, mass, inertia, _, inv_inertia = body.motion()
-            if not (body.asleep or (vx == 0.0 and vy == 0.0 and spin == 0.0)):
+            x, y = body.x, body.y
+            speed = push_resting(body, collider.radius, shot.origin, shot.vector)
+            if speed is None:
                 shot.rejected += 1  # only at rest
                 continue
-            dvx, dvy, dspin = shot_velocity(mass, inertia, collider.radius, shot.origin[0] - x, shot.origin[1] - y,
-                                            *shot.vector, rotates=inv_inertia > 0.0)
-            if dvx == 0.0 and dvy == 0.0:
+            if speed == 0.0:
                 continue
             ball = esper.try_component(ent, Ball)
             if ball is not None:
                 ball.rest_x, ball.rest_y = x, y  # where a hazard puts it back
-            body.push(dvx, dvy, dspin)
             shot.accepted += 1
             self.events.emit("shot", ent)
-            self.events.strike("shot", math.hypot(dvx, dvy), x, y, (ent, -1))
+            self.events.strike("shot", speed, x, y, (ent, -1))

@@ -19,7 +19,7 @@ from polygolf.engine.components.resources import Resources, StaticWorld, StepCon
 from polygolf.engine.physics import polygon
 from polygolf.engine.physics.geometry import ConvexSet
 from polygolf.engine.physics.grid import BoxGrid
-from polygolf.engine.physics.mass import MassProperties, mass_properties
+from polygolf.engine.physics.mass import mass_properties
 from polygolf.engine.physics.presets import DEFAULT_PRESET, PRESETS, Knobs, preset
 from polygolf.engine.physics.seams import PROBE, covered_features
 
@@ -42,21 +42,22 @@ def _collider_geometry(outline: polygon.Outline) -> tuple[ConvexSet, float, floa
 
 
 def make_body(outline: polygon.Outline, position: Sequence[float], density: float, angle: float = 0.0,
-              velocity: Sequence[float] = (0.0, 0.0), spin: float = 0.0, rotates: bool = True) -> Body:
+              velocity: Sequence[float] = (0.0, 0.0), spin: float = 0.0, rotates: bool = True,
+              asleep: bool = False) -> Body:
     """Dynamic body with the exact mass and inertia of its outline. `rotates=False` (no `spin`
     effect) gives infinite inertia: contacts then cannot turn it."""
-    props = _mass_properties(tuple(outline), density)
-    body = Body.dynamic(float(position[0]), float(position[1]), props.mass, props.inertia,
-                        angle=angle, vx=float(velocity[0]), vy=float(velocity[1]), spin=spin if rotates else 0.0)
-    if not rotates:
-        body.inv_inertia = 0.0
-    return body
+    mass, inertia, inv_mass, inv_inertia = _masses(tuple(outline), density, rotates)
+    return Body(float(position[0]), float(position[1]), angle, float(velocity[0]), float(velocity[1]),
+                spin if rotates else 0.0, mass, inertia, inv_mass, inv_inertia, asleep)
 
 
 @functools.lru_cache(maxsize=256)
-def _mass_properties(outline: polygon.Outline, density: float) -> MassProperties:
-    """`mass_properties`, once per shape and density (the answer is frozen)."""
-    return mass_properties(outline, density)
+def _masses(outline: polygon.Outline, density: float, rotates: bool) -> tuple[float, float, float, float]:
+    """Mass, inertia and their inverses (`Body.dynamic`'s), once per shape, density and whether it
+    turns (a search puts a thousand balls of one shape in a world)."""
+    props = mass_properties(outline, density)
+    body = Body.dynamic(0.0, 0.0, props.mass, props.inertia)
+    return body.mass, body.inertia, body.inv_mass, body.inv_inertia if rotates else 0.0
 
 
 def make_wall(outline: Sequence[polygon.Vec], material: Material) -> Wall:
@@ -120,8 +121,8 @@ def assemble(spec: WorldSpec, knobs: Knobs | str | None = None) -> Simulation:
     names: dict[int, str] = {}
     radius = 0.0
     for part in spec.bodies:
-        body = make_body(part.outline, part.position, part.density, part.angle, part.velocity, part.spin, rotates)
-        body.asleep = part.asleep
+        body = make_body(part.outline, part.position, part.density, part.angle, part.velocity, part.spin, rotates,
+                         part.asleep)
         collider = make_collider(part.outline, part.material)
         radius = max(radius, collider.radius)
         components: list[object] = [body, collider, Name(part.name), *part.extras]

@@ -13,7 +13,7 @@ def push_resting(body: Body, radius: float, origin: tuple[float, float], vector:
     None if it was moving. (The one way a shot moves a ball: the shot stage's, and a fan's, whose
     balls all rest when it begins.)"""
     x, y, _, vx, vy, spin, mass, inertia, _, inv_inertia = body.motion()
-    if not (body.asleep or (vx == 0.0 and vy == 0.0 and spin == 0.0)):
+    if (vx != 0.0 or vy != 0.0 or spin != 0.0) and not body.asleep:
         return None
     dvx, dvy, dspin = shot_velocity(mass, inertia, radius, origin[0] - x, origin[1] - y, *vector,
                                     rotates=inv_inertia > 0.0)

@@ -15,7 +15,7 @@ from polygolf.engine.physics.shot import shot_velocity
 from polygolf.engine.systems.cup import CupProcessor
 from polygolf.engine.systems.launch import LaunchProcessor
 from polygolf.engine.systems.scoring import ScoringProcessor
-from polygolf.engine.systems.shot import ShotProcessor
+from polygolf.engine.systems.shot import ShotProcessor, push_resting
 
 from .helpers import resources as ctx
 
@@ -48,6 +48,25 @@ def test_shot_is_refused_while_the_ball_moves(world):
     shot.request((0.0, 0.0), (1.0, 0.0))
     esper.process()
     assert body.vx == 2.0 and shot.rejected == 1 and shot.accepted == 0
+
+
+def test_the_push_moves_only_a_resting_body_and_says_how_fast():
+    """`push_resting`, the shot stage's push and a fan's: a moving body is left as it is (None), a
+    click gives nothing and leaves the body asleep (0.0), a shot wakes it with shot_velocity's
+    velocity, turned by a push off its centre, and says its speed."""
+    moving = make_body(SQUARE, (0.0, 0.0), 1.0, velocity=(0.3, 0.0))
+    assert push_resting(moving, 0.45, (0.0, 0.0), (1.0, 0.0)) is None and moving.vx == 0.3
+    resting = make_body(SQUARE, (1.0, 2.0), 1.0, asleep=True)
+    assert push_resting(resting, 0.45, (1.0, 2.0), (0.0, 0.0)) == 0.0 and resting.asleep
+    speed = push_resting(resting, 0.45, (1.0, 2.1), (0.6, 0.8))
+    vx, vy, spin = shot_velocity(resting.mass, resting.inertia, 0.45, 1.0 - 1.0, 2.1 - 2.0, 0.6, 0.8)
+    assert (resting.vx, resting.vy, resting.spin) == (vx, vy, spin) and spin < 0.0
+    assert speed == math.hypot(vx, vy) == pytest.approx(SHOT_POWER) and not resting.asleep
+    # Stopped but not yet asleep (no velocity at all) counts as resting too; a turn alone does not.
+    still = make_body(SQUARE, (0.0, 0.0), 1.0)
+    assert push_resting(still, 0.45, (0.0, 0.0), (1.0, 0.0)) == pytest.approx(SHOT_POWER)
+    turning = make_body(SQUARE, (0.0, 0.0), 1.0, spin=0.5)
+    assert push_resting(turning, 0.45, (0.0, 0.0), (1.0, 0.0)) is None and turning.vx == 0.0
 
 
 def test_linear_and_angular_parts_are_capped_apart():

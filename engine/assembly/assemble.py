@@ -120,10 +120,16 @@ def assemble(spec: WorldSpec, knobs: Knobs | str | None = None) -> Simulation:
     esper.switch_world(world)
     names: dict[int, str] = {}
     radius = 0.0
+    # Bodies of one outline and one material share their collider (a component nothing changes): a
+    # fan of shots puts a thousand copies of one ball in a world.
+    colliders: dict[tuple[int, int], Collider] = {}
     for part in spec.bodies:
         body = make_body(part.outline, part.position, part.density, part.angle, part.velocity, part.spin, rotates,
                          part.asleep)
-        collider = make_collider(part.outline, part.material)
+        same = (id(part.outline), id(part.material))
+        collider = colliders.get(same)
+        if collider is None:
+            collider = colliders[same] = make_collider(part.outline, part.material)
         radius = max(radius, collider.radius)
         components: list[object] = [body, collider, Name(part.name), *part.extras]
         if part.drag is not None:

@@ -7,9 +7,10 @@ from polygolf.engine.physics.polygon import Outline
 __all__ = ["Collider", "Material"]
 
 
-@dataclass(slots=True)
+@dataclass(slots=True, frozen=True)
 class Collider:
-    """A body's shape in its own frame (centroid at the origin), split into convex pieces."""
+    """A body's shape in its own frame (centroid at the origin), split into convex pieces. Never
+    changed once made, so bodies of one shape and material may share one."""
 
     outline: Outline
     shape: ConvexSet  # the convex pieces, in the body's frame

@@ -13,7 +13,8 @@ apart ("first frame": PolyGolf packs what its run of stages holds, Chipmunk buil
 Scenarios: 100 and 1000 pentagons moving in a closed box; one ball bouncing round Meadow's Obstacle
 Field (elastic, no drag, so it never stops); K shots at once on that hole (PolyGolf: `simulate_shots`,
 balls that meet walls but not each other; pymunk: K balls filtered from each other), reported as
-ball-frames per second.
+ball-frames per second: PolyGolf's the median of `--repeats` fans (after one not counted), each timed
+whole with its world's building, pymunk's the median of half as many runs (one takes seconds).
 """
 
 from __future__ import annotations

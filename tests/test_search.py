@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from polygolf.engine.golf.golfer import golfer_for
+from polygolf.engine.golf.golfer import _segment_distance, golfer_for
 from polygolf.engine.golf.holes import load_all_courses, load_hole_file
 from polygolf.engine.golf.layout import point_clearance
 from polygolf.engine.golf.play import HolePlay
@@ -100,6 +100,38 @@ def test_it_banks_when_the_straight_line_is_blocked() -> None:
     headings = [math.atan2(b[1] - a[1], b[0] - a[0]) for a, b in zip(path, path[1:]) if math.dist(a, b) > 1e-3]
     turns = [abs(math.remainder(b - a, math.tau)) for a, b in zip(headings, headings[1:])]
     assert max(turns) > math.radians(30)  # a bounce, not a curve
+
+
+@pytest.mark.parametrize("name", ["sandbox:1", "meadow:4", "hazards:6"])
+def test_the_planners_clearance_is_every_edges_distance_measured(name: str) -> None:
+    """`clear` measures only the edges near the segment; its answer is that of measuring every wall
+    and water edge, also for segments that pass an edge at the clearance give or take a hair."""
+    golfer = golfer_for(HOLES[name])
+    rng = random.Random(7)
+    x0, y0, x1, y1 = golfer._edge_boxes[:, 0].min(), golfer._edge_boxes[:, 1].min(), \
+        golfer._edge_boxes[:, 2].max(), golfer._edge_boxes[:, 3].max()
+    segments = []
+    for _ in range(300):
+        a = (rng.uniform(x0, x1), rng.uniform(y0, y1))
+        segments.append((a, (a[0] + rng.gauss(0.0, 2.0), a[1] + rng.gauss(0.0, 2.0))))
+    # Parallel to an edge, off it by the clearance, give or take 1e-12 to 1e-3.
+    for u, v in rng.sample(golfer.edges, min(60, len(golfer.edges))):
+        length = math.dist(u, v)
+        nx, ny = (v[1] - u[1]) / length, (u[0] - v[0]) / length
+        off = golfer.clearance + rng.choice((-1.0, 1.0)) * 10.0 ** rng.uniform(-12.0, -3.0)
+        segments.append(((u[0] + nx * off, u[1] + ny * off), (v[0] + nx * off, v[1] + ny * off)))
+    answers = [golfer.clear(a, b) for a, b in segments]
+    assert answers == [all(_segment_distance(a, b, u, v) >= golfer.clearance for u, v in golfer.edges)
+                       for a, b in segments]
+    assert 0 < sum(answers) < len(answers)  # both answers come up
+
+
+def test_a_holes_planner_is_built_once_and_a_reloaded_hole_gets_its_own() -> None:
+    hole = HOLES["meadow:4"]
+    assert golfer_for(hole) is golfer_for(hole)
+    again = load_hole_file(hole.path)
+    assert golfer_for(again) is not golfer_for(hole)
+    assert golfer_for(again).plan(again.layout.tee) == golfer_for(hole).plan(hole.layout.tee)
 
 
 def test_skill_spoils_the_aim_and_exact_skill_does_not() -> None:

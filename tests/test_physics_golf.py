@@ -14,6 +14,7 @@ from hypothesis import strategies as st
 
 from polygolf.engine.loading.scene import Scene, build_scene
 from polygolf.engine.physics.motion import decay
+from polygolf.engine.physics.seams import covered_features
 from polygolf.engine.physics.settings import LINEAR_SLOP
 
 from .conftest import PRESET_NAMES
@@ -105,6 +106,43 @@ def test_a_spinning_star_whose_tips_pass_a_millimetre_above_a_floor_is_untouched
         sim.run(0.5)
         ball = sim.body("ball")
         assert (ball.vx, ball.vy, ball.spin) == pytest.approx((10.0, 0.0, spin), abs=1e-9)
+
+
+def _box(x0: float, y0: float, x1: float, y1: float) -> tuple[list, list]:
+    return [(x0, y0), (x1, y0), (x1, y1), (x0, y1)], [(0.0, -1.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0)]
+
+
+def _internal_edges(*boxes: tuple[float, float, float, float]) -> list[frozenset[int]]:
+    pieces, normals = zip(*(_box(*b) for b in boxes))
+    return covered_features(pieces, normals, lambda i: range(len(pieces)))[0]
+
+
+def test_an_edge_is_internal_only_where_other_pieces_cover_all_of_it():
+    """(Edges: 0 bottom, 1 right, 2 top, 3 left.) A side wall four tiles long whose tiles' border
+    walls meet it at its quarter points is a face between them; a face covered end to end, by one
+    piece or two side by side, is internal; one bare for a centimetre at an end is a face."""
+    side = (17.85, -0.15, 18.15, 24.15)
+    crossings = [(15.8, y - 0.15, 18.15, y + 0.15) for y in (6.0, 12.0, 18.0)]
+    assert 3 not in _internal_edges(side, *crossings)[0]
+    assert _internal_edges((0.0, 0.0, 1.0, 1.0), (1.0, -1.0, 2.0, 2.0))[0] == {1}
+    assert _internal_edges((0.0, 0.0, 1.0, 1.0), (1.0, 0.0, 2.0, 0.4), (1.0, 0.4, 2.0, 1.0))[0] == {1}
+    assert 1 not in _internal_edges((0.0, 0.0, 1.0, 1.0), (1.0, 0.01, 2.0, 2.0))[0]
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_a_ball_shot_at_a_long_side_wall_between_its_crossings_bounces_back(preset):
+    """Random nine's seed 99 made such a column (hole 8): shots at the side wall went through it and
+    off the course, its whole inner face taken for a seam."""
+    walls = [{"polygon": [[17.85, -0.15], [18.15, -0.15], [18.15, 24.15], [17.85, 24.15]]}]
+    walls += [{"box": {"center": [16.975, y], "half": [1.175, 0.15]}} for y in (6.0, 12.0, 18.0)]
+    bodies = [{"name": f"ball-{k}", "shape": {"regular": 6, "radius": 0.3}, "position": [15.0, y],
+               "velocity": [20.0, 3.0 - k], "restitution": 0.5, "friction": 0.3}
+              for k, y in enumerate((3.0, 9.0, 15.0, 21.0))]
+    scene = Scene.model_validate({"name": "long-side", "walls": walls, "bodies": bodies, "collide_bodies": False})
+    with build_scene(scene, preset) as sim:
+        sim.run(0.5)
+        for name, ball in sim.bodies():
+            assert ball.x < 17.85 and ball.vx < 0.0, name
 
 
 @pytest.mark.parametrize("preset", PRESET_NAMES)

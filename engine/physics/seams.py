@@ -16,13 +16,40 @@ from collections.abc import Callable, Sequence
 
 from polygolf.engine.physics.polygon import Vec
 
-PROBE = 1e-4  # m: how far from an edge or vertex the cover is sampled
+PROBE = 1e-4  # m: how far from an edge or vertex the cover is sampled (and what of an edge's ends may stay bare)
 _DIRECTIONS = [(math.cos((k + 0.5) * math.pi / 8), math.sin((k + 0.5) * math.pi / 8)) for k in range(16)]
 
 
 def _inside(piece: Sequence[Vec], normals: Sequence[Vec], x: float, y: float) -> bool:
     """Strictly inside a convex CCW piece (points on its boundary are outside)."""
     return all((x - px) * nx + (y - py) * ny < 0.0 for (px, py), (nx, ny) in zip(piece, normals))
+
+
+def _inside_span(piece: Sequence[Vec], normals: Sequence[Vec], x: float, y: float, dx: float, dy: float
+                 ) -> tuple[float, float] | None:
+    """The open interval of t in [0, 1] for which (x, y) + t (dx, dy) is strictly inside a convex CCW
+    piece, or None: each face keeps the t on its inner side."""
+    lo, hi = 0.0, 1.0
+    for (px, py), (nx, ny) in zip(piece, normals):
+        level, rate = (x - px) * nx + (y - py) * ny, dx * nx + dy * ny  # beyond the face by level + t rate
+        if rate > 0.0:
+            hi = min(hi, -level / rate)
+        elif rate < 0.0:
+            lo = max(lo, -level / rate)
+        elif level >= 0.0:
+            return None
+    return (lo, hi) if lo < hi else None
+
+
+def _covered_along(spans: list[tuple[float, float]], margin: float) -> bool:
+    """Whether the spans, joined, cover [margin, 1 - margin] (spans that meet count as joined: two
+    pieces side by side cover the line where they touch)."""
+    reach = margin
+    for lo, hi in sorted(spans):
+        if lo > reach + 1e-9:
+            return False
+        reach = max(reach, hi)
+    return reach >= 1.0 - margin
 
 
 def covered_features(pieces: Sequence[Sequence[Vec]], normals: Sequence[Sequence[Vec]],
@@ -41,10 +68,15 @@ def covered_features(pieces: Sequence[Sequence[Vec]], normals: Sequence[Sequence
         n = len(piece)
         edges = set()
         for e in range(n):
+            # Internal only if other pieces cover it end to end, just outside it: a long edge that other
+            # walls cross here and there (a side wall four tiles long, the tiles' border walls meeting it)
+            # is a face everywhere else.
             (ax, ay), (bx, by) = piece[e], piece[(e + 1) % n]
             nx, ny = normals[i][e]
-            outside = [(ax + t * (bx - ax) + PROBE * nx, ay + t * (by - ay) + PROBE * ny) for t in (0.25, 0.5, 0.75)]
-            if all(covered(x, y) for x, y in outside):
+            spans = [span for j in others
+                     if (span := _inside_span(pieces[j], normals[j], ax + PROBE * nx, ay + PROBE * ny, bx - ax,
+                                              by - ay)) is not None]
+            if spans and _covered_along(spans, PROBE / max(math.hypot(bx - ax, by - ay), PROBE)):
                 edges.add(e)
         corners = set()
         for v, (vx, vy) in enumerate(piece):

@@ -165,6 +165,29 @@ def test_the_search_golfer_sinks_a_generated_hole(library):
     assert time.perf_counter() - started < 20.0, "the quickest proof should take seconds"
 
 
+# Holes whose long side wall other walls meet at its quarter points: taken for a seam whole, it let
+# full-power shots through and off the course (40 of 64 on the first; found by a sweep of seeds).
+@pytest.mark.parametrize(("seed", "number"), [(99, 8), (111, 1), (126, 6)])
+def test_no_full_power_shot_leaves_a_generated_hole(tmp_path, library, seed, number):
+    import math
+
+    from polygolf.engine.golf.search import PROOF_SHAPES
+    from polygolf.engine.golf.shots import Shot, simulate_shots
+    from polygolf.engine.physics.settings import MAX_SHOT_SPEED, SHOT_POWER
+
+    path = tmp_path / "hole.yaml"
+    path.write_text(generate(seed, library, number=number).text, encoding="utf-8")
+    hole = load_hole(path, library)
+    corners = [v for outline in hole.layout.wall_outlines() for v in outline]
+    x0, y0 = min(x for x, _ in corners), min(y for _, y in corners)
+    x1, y1 = max(x for x, _ in corners), max(y for _, y in corners)
+    full = MAX_SHOT_SPEED / SHOT_POWER
+    shots = [Shot(hole.layout.tee, (full * math.cos(a), full * math.sin(a)))
+             for a in (2 * math.pi * (k + 0.5) / 64 for k in range(64))]
+    rests = [r.rest for r in simulate_shots(hole, shots, "fast", shape=PROOF_SHAPES[0], max_seconds=12.0)]
+    assert [p for p in rests if not (x0 < p[0] < x1 and y0 < p[1] < y1)] == []
+
+
 def test_generate_command_writes_a_valid_proven_hole(tmp_path, monkeypatch, capsys):
     prove = instant_proof(strokes=2)
     monkeypatch.setattr("polygolf.engine.golf.generate.golfer_proof", lambda *a, **k: prove)

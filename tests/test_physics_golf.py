@@ -120,12 +120,14 @@ def _internal_edges(*boxes: tuple[float, float, float, float]) -> list[frozenset
 def test_an_edge_is_internal_only_where_other_pieces_cover_all_of_it():
     """(Edges: 0 bottom, 1 right, 2 top, 3 left.) A side wall four tiles long whose tiles' border
     walls meet it at its quarter points is a face between them; a face covered end to end, by one
-    piece or two side by side, is internal; one bare for a centimetre at an end is a face."""
+    piece or two side by side (flush, or 50 µm apart), is internal; one bare for a centimetre at an
+    end is a face."""
     side = (17.85, -0.15, 18.15, 24.15)
     crossings = [(15.8, y - 0.15, 18.15, y + 0.15) for y in (6.0, 12.0, 18.0)]
     assert 3 not in _internal_edges(side, *crossings)[0]
     assert _internal_edges((0.0, 0.0, 1.0, 1.0), (1.0, -1.0, 2.0, 2.0))[0] == {1}
     assert _internal_edges((0.0, 0.0, 1.0, 1.0), (1.0, 0.0, 2.0, 0.4), (1.0, 0.4, 2.0, 1.0))[0] == {1}
+    assert _internal_edges((0.0, 0.0, 1.0, 1.0), (1.0, 0.0, 2.0, 0.4), (1.0, 0.40005, 2.0, 1.0))[0] == {1}
     assert 1 not in _internal_edges((0.0, 0.0, 1.0, 1.0), (1.0, 0.01, 2.0, 2.0))[0]
 
 

@@ -2,7 +2,8 @@
 
 Walls are built of convex pieces (boxes along tile sides, pattern obstacles, the convex parts of a
 non-convex wall). Where two pieces meet flush, a face of one lies against the other (an internal
-edge) and corners sit on a flat stretch of the solid's boundary (hidden vertices). A ball sliding
+edge, if others cover it all along: a face that walls cross here and there is a face between them)
+and corners sit on a flat stretch of the solid's boundary (hidden vertices). A ball sliding
 across such a seam must feel one flat surface: an internal edge may never be a contact's reference
 face, and a hidden vertex never a contact point (Box2D's chain shapes and ghost vertices serve the
 same end). A vertex is hidden when the solid around it covers at least half of a small circle (flat
@@ -42,11 +43,12 @@ def _inside_span(piece: Sequence[Vec], normals: Sequence[Vec], x: float, y: floa
 
 
 def _covered_along(spans: list[tuple[float, float]], margin: float) -> bool:
-    """Whether the spans, joined, cover [margin, 1 - margin] (spans that meet count as joined: two
-    pieces side by side cover the line where they touch)."""
+    """Whether the spans, joined, cover [margin, 1 - margin], a gap of up to `margin` between two
+    counting as none (two pieces side by side cover the line where they touch, give or take a
+    rounding of their coordinates)."""
     reach = margin
     for lo, hi in sorted(spans):
-        if lo > reach + 1e-9:
+        if lo > reach + margin:
             return False
         reach = max(reach, hi)
     return reach >= 1.0 - margin

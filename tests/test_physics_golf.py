@@ -131,6 +131,42 @@ def test_an_edge_is_internal_only_where_other_pieces_cover_all_of_it():
     assert 1 not in _internal_edges((0.0, 0.0, 1.0, 1.0), (1.0, 0.01, 2.0, 2.0))[0]
 
 
+def test_a_vertex_is_hidden_only_on_a_flat_or_reflex_stretch_of_the_walls():
+    """Two boxes side by side: the corners where they meet on top lie on a flat stretch (hidden),
+    the outer ones are corners; an L of two boxes hides its inner corner; a ridge of 165 degrees
+    with another wall beside it is a corner (16 sampled directions took such a ridge for flat)."""
+    pieces, normals = zip(_box(0.0, 0.0, 1.0, 1.0), _box(1.0, 0.0, 2.0, 1.0))
+    hidden = covered_features(pieces, normals, lambda i: range(2))[1]
+    assert hidden[0] == {1, 2} and hidden[1] == {0, 3}
+    pieces, normals = zip(_box(0.0, 0.0, 2.0, 1.0), _box(0.0, 1.0, 1.0, 2.0))
+    assert 2 not in covered_features(pieces, normals, lambda i: range(2))[1][0]  # (2, 1): a corner
+    slope = math.tan(math.radians(7.5))
+    ridge = [(-2.0, -2.0 * slope - 1.0), (2.0, -2.0 * slope - 1.0), (2.0, -2.0 * slope), (0.0, 0.0),
+             (-2.0, -2.0 * slope)]
+    ridge_normals = [(0.0, -1.0), (1.0, 0.0), (math.sin(math.radians(7.5)), math.cos(math.radians(7.5))),
+                     (-math.sin(math.radians(7.5)), math.cos(math.radians(7.5))), (-1.0, 0.0)]
+    beside, beside_normals = _box(2.0, -3.0, 3.0, -2.0)
+    hidden = covered_features([ridge, beside], [ridge_normals, beside_normals], lambda i: range(2))[1]
+    assert 3 not in hidden[0]
+    pieces, normals = zip(_box(0.0, 0.0, 2.0, 1.0), _box(1.0, 1.0, 2.0, 2.0))  # an L: (1, 1) is inside its bend
+    assert 0 in covered_features(pieces, normals, lambda i: range(2))[1][1]
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_a_square_rests_on_a_ridge_beside_another_wall_without_sinking(preset):
+    slope = math.tan(math.radians(7.5))
+    ridge = [[-2.0, -2.0 * slope - 1.0], [2.0, -2.0 * slope - 1.0], [2.0, -2.0 * slope], [0.0, 0.0],
+             [-2.0, -2.0 * slope]]
+    scene = Scene.model_validate({
+        "name": "ridge", "gravity": [0.0, -9.81],
+        "walls": [{"polygon": ridge}, {"box": {"center": [2.5, -2.0 * slope - 0.5], "half": [0.5, 0.5]}}],
+        "bodies": [{"name": "square", "shape": {"regular": 4, "radius": 0.35}, "angle": 45, "position": [0.0, 0.26],
+                    "restitution": 0.0, "friction": 0.8}]})
+    with build_scene(scene, preset) as sim:
+        sim.run(2.0)
+        assert sim.body("square").y == pytest.approx(0.35 * math.cos(math.pi / 4), abs=LINEAR_SLOP)
+
+
 @pytest.mark.parametrize("preset", PRESET_NAMES)
 def test_a_ball_shot_at_a_long_side_wall_between_its_crossings_bounces_back(preset):
     """Random nine's seed 99 made such a column (hole 8): shots at the side wall went through it and

@@ -18,12 +18,8 @@ from collections.abc import Callable, Sequence
 from polygolf.engine.physics.polygon import Vec
 
 PROBE = 1e-4  # m: how far from an edge or vertex the cover is sampled (and what of an edge's ends may stay bare)
-_DIRECTIONS = [(math.cos((k + 0.5) * math.pi / 8), math.sin((k + 0.5) * math.pi / 8)) for k in range(16)]
-
-
-def _inside(piece: Sequence[Vec], normals: Sequence[Vec], x: float, y: float) -> bool:
-    """Strictly inside a convex CCW piece (points on its boundary are outside)."""
-    return all((x - px) * nx + (y - py) * ny < 0.0 for (px, py), (nx, ny) in zip(piece, normals))
+_TURN = 2.0 * math.pi
+_FLAT = 1e-6  # rad: the solid round a vertex fills half the turn within this: a flat stretch
 
 
 def _inside_span(piece: Sequence[Vec], normals: Sequence[Vec], x: float, y: float, dx: float, dy: float
@@ -54,6 +50,50 @@ def _covered_along(spans: list[tuple[float, float]], margin: float) -> bool:
     return reach >= 1.0 - margin
 
 
+def _meet(a: float, wa: float, b: float, wb: float) -> tuple[float, float]:
+    """The arc two arcs (start angle, width) share, for arcs at most a half turn wide or the whole
+    turn: (start, width), width 0 if none."""
+    if wa >= _TURN:
+        return b, wb
+    d = (b - a) % _TURN
+    lo, hi = max(0.0, d - _TURN), min(wa, d + wb - _TURN)  # B as it wraps round to meet A's start
+    if hi <= lo:
+        lo, hi = d, min(wa, d + wb)
+    return a + lo, max(0.0, hi - lo)
+
+
+def _cone(piece: Sequence[Vec], normals: Sequence[Vec], x: float, y: float) -> tuple[float, float] | None:
+    """The directions from (x, y) that lead into a convex CCW piece, as an arc (start angle, width):
+    the whole turn from inside it, the directions behind every face that passes within PROBE of the
+    point from on its boundary, None from farther outside."""
+    start, width = 0.0, _TURN
+    for (px, py), (nx, ny) in zip(piece, normals):
+        level = (x - px) * nx + (y - py) * ny
+        if level > PROBE:
+            return None
+        if level >= -PROBE:  # the face passes by the point: only the directions behind it lead in
+            start, width = _meet(start, width, math.atan2(ny, nx) + 0.5 * math.pi, math.pi)
+            if width <= 0.0:
+                return None
+    return start, width
+
+
+def _covered_turn(arcs: list[tuple[float, float]]) -> float:
+    """How much of the turn the arcs (start angle, width) cover together, in radians."""
+    spans = []
+    for start, width in arcs:
+        if width >= _TURN:
+            return _TURN
+        start %= _TURN
+        spans += [(start, _TURN), (0.0, start + width - _TURN)] if start + width > _TURN else [(start, start + width)]
+    total, reach = 0.0, 0.0
+    for lo, hi in sorted(spans):
+        lo = max(lo, reach)
+        if hi > lo:
+            total, reach = total + hi - lo, hi
+    return total
+
+
 def covered_features(pieces: Sequence[Sequence[Vec]], normals: Sequence[Sequence[Vec]],
                      neighbours: Callable[[int], Sequence[int]]
                      ) -> tuple[list[frozenset[int]], list[frozenset[int]]]:
@@ -63,9 +103,6 @@ def covered_features(pieces: Sequence[Sequence[Vec]], normals: Sequence[Sequence
     hidden: list[frozenset[int]] = []
     for i, piece in enumerate(pieces):
         others = [j for j in neighbours(i) if j != i]
-
-        def covered(x: float, y: float, others: list[int] = others) -> bool:
-            return any(_inside(pieces[j], normals[j], x, y) for j in others)
 
         n = len(piece)
         edges = set()
@@ -82,10 +119,12 @@ def covered_features(pieces: Sequence[Sequence[Vec]], normals: Sequence[Sequence
                 edges.add(e)
         corners = set()
         for v, (vx, vy) in enumerate(piece):
-            around = sum(covered(vx + PROBE * dx, vy + PROBE * dy) or _inside(piece, normals[i], vx + PROBE * dx,
-                                                                                vy + PROBE * dy)
-                         for dx, dy in _DIRECTIONS)
-            if others and around >= len(_DIRECTIONS) // 2:
+            # Hidden if the solid round it (this piece's corner and the other pieces there) fills half
+            # the turn or more, worked out from the faces' directions: sampled in 16 directions, corners
+            # of 158 to 180 degrees counted as flat, and a box resting on such a ridge sank into it.
+            arcs = [cone for cone in [_cone(piece, normals[i], vx, vy)]
+                    + [_cone(pieces[j], normals[j], vx, vy) for j in others] if cone is not None]
+            if others and _covered_turn(arcs) >= math.pi - _FLAT:
                 corners.add(v)
         internal.append(frozenset(edges))
         hidden.append(frozenset(corners))

@@ -17,7 +17,9 @@ from collections.abc import Callable, Sequence
 
 from polygolf.engine.physics.polygon import Vec
 
-PROBE = 1e-4  # m: how far from an edge or vertex the cover is sampled (and what of an edge's ends may stay bare)
+# m: an edge's cover is looked for this far outside it, and may leave this much of it bare; a face
+# passing this near a vertex counts as passing through it.
+PROBE = 1e-4
 _TURN = 2.0 * math.pi
 _FLAT = 1e-6  # rad: the solid round a vertex fills half the turn within this: a flat stretch
 

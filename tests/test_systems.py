@@ -15,7 +15,7 @@ from polygolf.engine.components import Body, Drag, Material
 from polygolf.engine.physics import polygon
 from polygolf.engine.physics.body import ANGLE, ANGLE0, COLUMNS, INV_MASS, X0, Y0, X, Y
 from polygolf.engine.physics.contact import P_NORMAL_IMPULSE, P_TANGENT_IMPULSE, ContactPoint, Manifold, table_of
-from polygolf.engine.physics.settings import TIME_TO_REST, TOI_TARGET
+from polygolf.engine.physics.settings import LINEAR_SLOP, TIME_TO_REST, TOI_TARGET
 from polygolf.engine.systems.broadphase import BroadphaseProcessor
 from polygolf.engine.systems.ccd import CCDProcessor, _dynamic_pairs_may_step_far
 from polygolf.engine.systems.drag import DragProcessor
@@ -248,11 +248,12 @@ def test_ccd_stops_a_body_at_its_time_of_impact(world):
 @settings(max_examples=200, deadline=None)
 @given(st.lists(st.tuples(st.floats(-1e4, 1e4), st.floats(-1e4, 1e4), st.floats(-50, 50), st.floats(-0.3, 0.3),
                           st.floats(-0.3, 0.3), st.floats(-0.5, 0.5), st.floats(0.05, 1.0), st.floats(0.1, 1.0)),
-                min_size=2, max_size=12))
-def test_no_two_dynamic_bodies_step_far_while_the_quick_bound_says_so(bodies):
+                min_size=2, max_size=12), st.booleans())
+def test_no_two_dynamic_bodies_step_far_while_the_quick_bound_says_so(bodies, sweep_all):
     """Continuous collision skips looking for pairs of dynamic bodies when twice the longest step is
-    below half the thinnest width; then no pair steps half its thinner width relative to the other
-    (the test `toi.body_pair_hits` makes, with the exact length), wherever the bodies are."""
+    below half the thinnest width (the slop, when it sweeps all: a game's balls); then no pair steps
+    that far relative to the other (the test `toi.body_pair_hits` makes, with the exact length),
+    wherever the bodies are."""
     state = np.zeros((len(bodies), len(COLUMNS)))
     for k, (x, y, a, dx, dy, da, _, _) in enumerate(bodies):
         state[k, X0], state[k, Y0], state[k, ANGLE0] = x, y, a
@@ -266,9 +267,9 @@ def test_no_two_dynamic_bodies_step_far_while_the_quick_bound_says_so(bodies):
         return (math.hypot(a[X] - a[X0] - b[X] + b[X0], a[Y] - a[Y0] - b[Y] + b[Y0])
                 + abs(a[ANGLE] - a[ANGLE0]) * radius[i] + abs(b[ANGLE] - b[ANGLE0]) * radius[j])
 
-    far = [relative_step(i, j) >= 0.5 * min(thickness[i], thickness[j])
+    far = [relative_step(i, j) >= (LINEAR_SLOP if sweep_all else 0.5 * min(thickness[i], thickness[j]))
            for i in range(len(bodies)) for j in range(i + 1, len(bodies))]
-    if not _dynamic_pairs_may_step_far(state, rows, radius, thickness):
+    if not _dynamic_pairs_may_step_far(state, rows, radius, thickness, sweep_all):
         assert not any(far)
 
 
@@ -280,6 +281,7 @@ def test_a_slow_pile_skips_the_search_for_pairs_and_a_fast_pair_does_not():
     state[:, X0] = state[:, Y0] = [0.0, 1.0, 2.0]
     state[:, X], state[:, Y] = state[:, X0] + 0.02, state[:, Y0]
     rows, radius, thickness = np.arange(3), np.full(3, 0.2), np.full(3, 0.36)
-    assert not _dynamic_pairs_may_step_far(state, rows, radius, thickness)
+    assert not _dynamic_pairs_may_step_far(state, rows, radius, thickness, False)
+    assert _dynamic_pairs_may_step_far(state, rows, radius, thickness, True)  # a game's balls: beyond the slop
     state[1, X] += 0.08
-    assert _dynamic_pairs_may_step_far(state, rows, radius, thickness)
+    assert _dynamic_pairs_may_step_far(state, rows, radius, thickness, False)

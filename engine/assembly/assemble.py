@@ -148,7 +148,7 @@ def assemble(spec: WorldSpec, knobs: Knobs | str | None = None) -> Simulation:
         esper.create_entity(body, make_collider(part.outline, part.material), Name(part.name), *part.extras)
 
     res = Resources(config=StepConfig(knobs=knobs, effects=frozenset(effects), gravity=tuple(spec.gravity),
-                                      collide_bodies=spec.collide_bodies),
+                                      collide_bodies=spec.collide_bodies, sweep_bodies=spec.sweep_bodies),
                     statics=statics)
     processors = [stage.processor(res) for stage in stages_for(effects, spec, knobs)]
     return Simulation(world, res, processors, names, preset_name=name, reasons=effects, scene_name=spec.name)

@@ -74,6 +74,7 @@ class WorldSpec:
     preset: str | None = None  # the content's own preset, if it names one
     cell_size: float | None = None  # broadphase grid cell; default 4 body radii (at least 1 m)
     collide_bodies: bool = True  # False: dynamic bodies pass through each other (parallel shots)
+    sweep_bodies: bool = False  # continuous collision between dynamic bodies beyond the slop (`StepConfig`)
 
     @property
     def touchable(self) -> bool:

@@ -398,15 +398,15 @@ def first_pair_hit(lva: np.ndarray, lna: np.ndarray, fa: np.ndarray, ra: np.ndar
 @kernel
 def body_pair_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
                    pairs: np.ndarray, state: np.ndarray, rows: np.ndarray, radius: np.ndarray, thickness: np.ndarray,
-                   meet: bool, slop: float, target: float, tolerance: float, allowance: float, hits: np.ndarray,
-                   arm_hits: np.ndarray) -> int:
+                   meet: bool, sweep_all: bool, slop: float, target: float, tolerance: float, allowance: float,
+                   hits: np.ndarray, arm_hits: np.ndarray) -> int:
     """Continuous collision between bodies: for each pair (shapes of a `ShapeTable`, rows `rows[q]`
     of a `body.BodyStore` state, swept from the substep's start to now) of which one is moving (awake
     and dynamic, or kinematic and turning), a dynamic one (with `meet`, or only against a kinematic
-    one), and whose relative step could matter (any beyond `slop` against a kinematic body; between
-    two dynamic ones, half the thinner's width), the earliest impact; it goes into `hits[q]` of
-    each awake dynamic body of the pair and, for a pair with a kinematic body, into `arm_hits[g]`
-    (else 1.0) for the caller to judge the arm. Returns how many pairs hit."""
+    one), and whose relative step could matter (any beyond `slop` against a kinematic body, or with
+    `sweep_all`; else, between two dynamic ones, half the thinner's width), the earliest impact; it
+    goes into `hits[q]` of each awake dynamic body of the pair and, for a pair with a kinematic body,
+    into `arm_hits[g]` (else 1.0) for the caller to judge the arm. Returns how many pairs hit."""
     count = 0
     work = toi_work(widest(first))
     start_a, end_a, start_b, end_b = work[4][0], work[4][1], work[4][2], work[4][3]
@@ -424,7 +424,7 @@ def body_pair_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.
         if not (moving_a or moving_b):
             continue  # a resting ball is swept only against a turning windmill (which it may stall)
         kinematic_pair = not (dyn_a and dyn_b)
-        limit = slop if kinematic_pair else 0.5 * min(thickness[a], thickness[b])
+        limit = slop if kinematic_pair or sweep_all else 0.5 * min(thickness[a], thickness[b])
         travel = length_near(state[ka, X] - state[ka, X0] - state[kb, X] + state[kb, X0],
                              state[ka, Y] - state[ka, Y0] - state[kb, Y] + state[kb, Y0],
                              abs(state[ka, ANGLE] - state[ka, ANGLE0]) * radius[a],
@@ -595,7 +595,7 @@ def _warm() -> None:
     first_pair_hit(*args, start, end, *args, still, still, 0.005, 0.001, 0.005, toi_work(4))
     body_pair_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                    table.body_first, np.array([[0, 1]], dtype=np.int64), state, np.array([0, 1], dtype=np.int64),
-                   np.full(2, 0.71), np.full(2, 1.0), True, 0.005, 0.005, 0.001, 0.005, np.ones(2), np.ones(1))
+                   np.full(2, 0.71), np.full(2, 1.0), True, False, 0.005, 0.005, 0.001, 0.005, np.ones(2), np.ones(1))
     pairs_apart(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
                 np.array([[0, 1]], dtype=np.int64), np.array([0.01]), state, np.array([0, 1], dtype=np.int64),
                 np.full(2, 0.71), np.zeros(1, dtype=np.int64), 1.0 / 240.0, np.zeros(1, dtype=np.bool_),

@@ -51,7 +51,7 @@ class CCDProcessor(esper.Processor):
             widest = max(np.diff(table.pieces.first).max(initial=0), np.diff(self.statics.pieces.first).max(initial=0))
             self._work, self._table = toi_work(int(widest)), table
         return (self._seen, self._found, self._hits, self._work, self._boxes, len(bodies) > 1,
-                self.config.collide_bodies, self._no_kept)
+                self.config.collide_bodies, self._no_kept, self.config.sweep_bodies)
 
     def process(self) -> None:
         inputs = self.inputs()  # first: it gathers the state
@@ -76,7 +76,7 @@ def _sweep_walls(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tupl
     """Every body against the walls its motion sweeps (`toi.first_wall_hits`)."""
     lv, ln, first, reach, body_first, rows, radius, _, _, _, _ = shapes
     (wv, wn, wfirst, _, _), _, _, _, _, grid = walls
-    seen, found, hits, work, boxes, _, _, _ = inputs
+    seen, found, hits, work, boxes, _, _, _, _ = inputs
     # No pair can need sweeping while no body steps half the linear slop.
     return first_wall_hits(lv, ln, first, reach, body_first, state, rows, radius, LINEAR_SLOP, grid, fat_boxes, seen,
                            found, wv, wn, wfirst, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP, 0.5 * LINEAR_SLOP, hits,
@@ -96,9 +96,9 @@ def _body_hits(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple) ->
     crush the ball it meets stalls too. Returns how many pairs hit."""
     lv, ln, first, reach, body_first, rows, radius, thickness, _, ents, _ = shapes
     (wv, wn, wfirst, _, _), _, _, _, _, grid = walls
-    seen, found, hits, _, _, _, meet, no_kept = inputs
+    seen, found, hits, _, _, _, meet, no_kept, sweep_all = inputs
     pairs = body_pairs(state, rows, radius, TOI_TARGET, True, meet, True,
-                       meet and _dynamic_pairs_may_step_far(state, rows, radius, thickness), no_kept)
+                       meet and _dynamic_pairs_may_step_far(state, rows, radius, thickness, sweep_all), no_kept)
     # A is the smaller entity, as in the contact table. The rows follow esper's sets, whose order
     # changes with the other entities (with K balls the windmill's row came first): a pair's impact,
     # rounded one way or the other, would then differ between a shot alone and the same shot among K.
@@ -106,8 +106,8 @@ def _body_hits(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple) ->
         if ents[pairs[g, 0]] > ents[pairs[g, 1]]:
             pairs[g, 0], pairs[g, 1] = pairs[g, 1], pairs[g, 0]
     arm_hits = np.empty(len(pairs))
-    count = body_pair_hits(lv, ln, first, reach, body_first, pairs, state, rows, radius, thickness, meet, LINEAR_SLOP,
-                           TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP, hits, arm_hits)
+    count = body_pair_hits(lv, ln, first, reach, body_first, pairs, state, rows, radius, thickness, meet, sweep_all,
+                           LINEAR_SLOP, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP, hits, arm_hits)
     if count == 0:
         return 0
     for g in range(len(pairs)):
@@ -122,14 +122,14 @@ def _body_hits(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple) ->
 
 
 @leaf_kernel
-def _dynamic_pairs_may_step_far(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, thickness: np.ndarray
-                                ) -> bool:
-    """Whether two dynamic bodies could step half the thinner one's width relative to each other,
-    as `toi.body_pair_hits` asks before it sweeps them: their relative step is at most the sum of
-    their steps (each its centre's |dx| + |dy| and its turn at its bounding radius), so not while
-    twice the longest step is below half the thinnest width (a pile's substep, as a rule: then no
-    pair of dynamic bodies is looked for at all). The margin covers the rounding of the steps'
-    differences, which grows with the coordinates."""
+def _dynamic_pairs_may_step_far(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, thickness: np.ndarray,
+                                sweep_all: bool) -> bool:
+    """Whether two dynamic bodies could step past each other as far as `toi.body_pair_hits` asks
+    before it sweeps them (half the thinner one's width; the slop with `sweep_all`): their relative
+    step is at most the sum of their steps (each its centre's |dx| + |dy| and its turn at its
+    bounding radius), so not while twice the longest step is below that (a pile's substep, as a
+    rule: then no pair of dynamic bodies is looked for at all). The margin covers the rounding of
+    the steps' differences, which grows with the coordinates."""
     longest, thinnest, largest = 0.0, math.inf, 0.0
     for q in range(len(rows)):
         k = rows[q]
@@ -142,6 +142,8 @@ def _dynamic_pairs_may_step_far(state: np.ndarray, rows: np.ndarray, radius: np.
         longest = max(longest, step)
         thinnest = min(thinnest, thickness[q])
         largest = max(largest, abs(x), abs(y), abs(x0), abs(y0), (abs(a) + abs(a0)) * radius[q])
+    if sweep_all:
+        return 2.0 * longest * (1.0 + 1e-9) + 1e-12 * largest >= LINEAR_SLOP
     return 4.0 * longest * (1.0 + 1e-9) + 1e-12 * largest >= thinnest
 
 

@@ -229,7 +229,7 @@ def _idle_inputs() -> tuple:
         (ints, areas.verts, areas.first, areas.boxes, floats, ints.copy()),  # sand
         (ints, areas.verts, areas.first, areas.boxes, floats, ints.copy()),  # ice
         (ints, np.zeros((0, 4))),  # drag
-        (flags, ints, floats, _no_work(), np.empty((2, 4)), False, True, no_fat_pairs()),  # ccd
+        (flags, ints, floats, _no_work(), np.empty((2, 4)), False, True, no_fat_pairs(), False),  # ccd
         (flags, ints, ints, np.zeros(1, dtype=np.int64), np.zeros((0, 2), dtype=np.int64), False, True,
          no_fat_pairs()),  # broadphase
         (False, True),  # narrowphase

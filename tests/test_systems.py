@@ -13,11 +13,11 @@ from hypothesis import strategies as st
 from polygolf.engine.assembly.assemble import make_body, make_collider
 from polygolf.engine.components import Body, Drag, Material
 from polygolf.engine.physics import polygon
-from polygolf.engine.physics.body import ANGLE, ANGLE0, COLUMNS, INV_MASS, X0, Y0, X, Y
+from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, COLUMNS, INV_MASS, X0, Y0, X, Y
 from polygolf.engine.physics.contact import P_NORMAL_IMPULSE, P_TANGENT_IMPULSE, ContactPoint, Manifold, table_of
 from polygolf.engine.physics.settings import LINEAR_SLOP, TIME_TO_REST, TOI_TARGET
 from polygolf.engine.systems.broadphase import BroadphaseProcessor
-from polygolf.engine.systems.ccd import CCDProcessor, _dynamic_pairs_may_step_far
+from polygolf.engine.systems.ccd import CCDProcessor, _dynamic_pairs_may_step_far, _together
 from polygolf.engine.systems.drag import DragProcessor
 from polygolf.engine.systems.gravity import GravityProcessor
 from polygolf.engine.systems.integrate import IntegrateProcessor
@@ -285,3 +285,17 @@ def test_a_slow_pile_skips_the_search_for_pairs_and_a_fast_pair_does_not():
     assert _dynamic_pairs_may_step_far(state, rows, radius, thickness, True)  # a game's balls: beyond the slop
     state[1, X] += 0.08
     assert _dynamic_pairs_may_step_far(state, rows, radius, thickness, False)
+
+
+def test_touching_balls_go_back_together_and_others_alone():
+    """Of two players' balls touching at the substep's start, one put back to a wall's impact takes
+    the other back with it (else it would be driven into); a ball apart, or asleep, keeps its own."""
+    state = np.zeros((4, len(COLUMNS)))
+    state[:, INV_MASS] = 1.0
+    state[:, X0] = [0.0, 0.9, 3.0, 3.9]  # radius 0.45: 0 and 1 touch, 2 and 3 touch
+    state[3, ASLEEP] = 1.0
+    rows, radius = np.arange(4), np.full(4, 0.45)
+    pairs = np.array([[0, 1], [1, 2], [2, 3]], dtype=np.int64)
+    hits = np.array([1.0, 0.3, 0.6, 1.0])
+    _together(state, rows, radius, pairs, hits)
+    assert hits.tolist() == [0.3, 0.3, 0.6, 1.0]

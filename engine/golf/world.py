@@ -93,8 +93,8 @@ def _drop_spots(layout: HoleLayout, radius: float) -> tuple[tuple[float, float],
 def hole_spec(hole: Hole, shape: ShapeSpec, players: int = 1) -> WorldSpec:
     """The world of `hole` played with `shape` (scaled to the library's ball radius) by `players`
     players, each with a ball of their own: they meet each other on the green. Two balls are swept
-    against each other beyond the slop (`StepConfig.sweep_bodies`): continuous collision puts each
-    pair back to its own time of impact, which is exact for two bodies; of three or four side by
+    against each other beyond the slop (`StepConfig.sweep_bodies`): continuous collision puts the
+    pair back to its time of impact (both, if they touch, to the earlier of theirs); of three or four side by
     side, a ball put back is driven into by the one behind (a row struck at full power overlapped by
     up to 39 cm at fast, against 24 cm without), so there the discrete contacts part what steps less
     than half a ball's width."""

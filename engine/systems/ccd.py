@@ -5,7 +5,7 @@ import numpy as np
 
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
-from polygolf.engine.physics.body import ANGLE, ANGLE0, INV_MASS, X0, Y0, X, Y
+from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, INV_MASS, X0, Y0, X, Y
 from polygolf.engine.physics.collide import max_separation
 from polygolf.engine.physics.geometry import pose_piece
 from polygolf.engine.physics.grid import body_pairs, no_fat_pairs, overlapping
@@ -110,6 +110,8 @@ def _body_hits(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple) ->
                            LINEAR_SLOP, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP, hits, arm_hits)
     if count == 0:
         return 0
+    if sweep_all:
+        _together(state, rows, radius, pairs, hits)
     for g in range(len(pairs)):
         hit = arm_hits[g]
         if hit >= 1.0:
@@ -119,6 +121,27 @@ def _body_hits(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple) ->
         if _pinched(lv, ln, first, body_first, state, rows, radius, arm, ball, hit, grid, seen, found, wv, wn, wfirst):
             hits[arm] = min(hits[arm], hit)
     return count
+
+
+@leaf_kernel
+def _together(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, pairs: np.ndarray, hits: np.ndarray) -> None:
+    """Awake dynamic bodies within the contact margin of each other (their bounding circles) at the
+    substep's start go back to the earliest impact either has: a ball pushing another into a wall
+    would otherwise drive on into the one the wall put back."""
+    changed = True
+    while changed:
+        changed = False
+        for g in range(len(pairs)):
+            a, b = pairs[g, 0], pairs[g, 1]
+            ka, kb = rows[a], rows[b]
+            if hits[a] == hits[b] or state[ka, INV_MASS] == 0.0 or state[kb, INV_MASS] == 0.0 \
+                    or state[ka, ASLEEP] != 0.0 or state[kb, ASLEEP] != 0.0:
+                continue
+            dx, dy = state[ka, X0] - state[kb, X0], state[ka, Y0] - state[kb, Y0]
+            reach = radius[a] + radius[b] + CONTACT_MARGIN
+            if dx * dx + dy * dy <= reach * reach:
+                hits[a] = hits[b] = min(hits[a], hits[b])
+                changed = True
 
 
 @leaf_kernel

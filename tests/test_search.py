@@ -134,6 +134,25 @@ def test_a_holes_planner_is_built_once_and_a_reloaded_hole_gets_its_own() -> Non
     assert golfer_for(again).plan(again.layout.tee) == golfer_for(hole).plan(hole.layout.tee)
 
 
+def test_a_loose_golfer_weighs_its_best_shots_as_it_would_play_them() -> None:
+    """At skill 0.5 the golfer takes, of its best shots, the one that fares best played loosely:
+    over 12 seeds from Water Carry's tee its shots (spoiled alike) cost less in all than the exact
+    best spoiled the same way; at skill 1 it is the exact best."""
+    hole = HOLES["hazards:2"]
+    start = hole.layout.tee
+    exact, loose = [], []
+    for k in range(12):
+        best = SearchGolfer(hole, HEXAGON, "fast", "normal", seed=k).search(start).shot
+        exact.append(spoil(best, 0.5, random.Random(k)))
+        loose.append(SearchGolfer(hole, HEXAGON, "fast", "normal", seed=k).aim(start, skill=0.5, rng=random.Random(k)))
+    assert SearchGolfer(hole, HEXAGON, "fast", "normal", seed=0).aim(start) == \
+        SearchGolfer(hole, HEXAGON, "fast", "normal", seed=0).search(start).shot
+    judge = SearchGolfer(hole, HEXAGON, "fast", "normal")
+    cost = {name: sum(judge.cost(r) for r in simulate_shots(hole, shots, "fast", shape=HEXAGON, max_seconds=20.0))
+            for name, shots in (("exact", exact), ("loose", loose))}
+    assert cost["loose"] < 0.95 * cost["exact"]
+
+
 def test_skill_spoils_the_aim_and_exact_skill_does_not() -> None:
     shot = Shot((1.0, 2.0), (3.0, 0.0), (0.0, 0.1), 0.3)
     assert spoil(shot, 1.0, random.Random(1)) == shot

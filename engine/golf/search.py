@@ -217,6 +217,10 @@ class SearchGolfer:
 
     def search(self, start: tuple[float, float], angle: float = 0.0, windmills: Sequence[float] = ()) -> Choice:
         """The best shot found from `start` (the ball turned `angle`)."""
+        return self._tried(start, angle, windmills)[0]
+
+    def _tried(self, start: tuple[float, float], angle: float, windmills: Sequence[float]) -> list[Choice]:
+        """Every shot the search simulated from `start`, best first."""
         effort = self.effort
         shots = self.fan(start, angle)
         tried = [Choice(s, r, self.cost(r)) for s, r in zip(shots, self.simulate(shots, windmills))]
@@ -239,24 +243,51 @@ class SearchGolfer:
             tried += [Choice(s, r, self.cost(r)) for s, r in zip(shots, self.simulate(shots, windmills))]
             tried.sort(key=lambda c: c.cost)
             spread_heading, spread_power, spread_grab = 0.5 * spread_heading, 0.6 * spread_power, 0.6 * spread_grab
-        return tried[0]
+        return tried
 
     def aim(self, start: tuple[float, float], angle: float = 0.0, windmills: Sequence[float] = (),
             skill: float = 1.0, rng: random.Random | None = None) -> Shot:
-        """The shot a golfer of `skill` (1 = exact, 0 = wild) plays from `start`: the best shot found,
-        its direction and length spoiled by noise that grows as skill falls."""
-        shot = self.search(start, angle, windmills).shot
+        """The shot a golfer of `skill` (1 = exact, 0 = wild) plays from `start`, its direction and
+        length spoiled by noise that grows as skill falls. Below skill 1 it is the shot, of the best
+        few found, that fares best on average when played that loosely (each tried astray by one
+        spread of the noise either way in aim and power): a shot that skirts water is a poor bet
+        for a golfer whose aim wanders, who would otherwise play it into the water again and again."""
+        miss = _miss(skill)
+        tried = self._tried(start, angle, windmills)
+        shot = tried[0].shot
+        if miss > 0.0 and len(tried) > 1:
+            finalists = [c.shot for c in tried[:FINALISTS]]
+            loose = [_astray(s, heading * AIM_SPREAD * miss, POWER_SPREAD * miss * power)
+                     for s in finalists for heading, power in LOOSE_PLAYS]
+            costs = [self.cost(r) for r in self.simulate(loose, windmills)]
+            totals = [sum(costs[k * len(LOOSE_PLAYS):(k + 1) * len(LOOSE_PLAYS)]) for k in range(len(finalists))]
+            shot = finalists[totals.index(min(totals))]
         return spoil(shot, skill, rng or self.rng)
+
+
+AIM_SPREAD, POWER_SPREAD = 0.12, 0.2  # rad, and log of the power, astray (one spread) at skill 0
+FINALISTS = 6  # the best shots a loose golfer weighs
+LOOSE_PLAYS = ((0, 0), (1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, -1), (1, -1), (-1, 1))  # in spreads
+
+
+def _miss(skill: float) -> float:
+    return max(0.0, min(1.0, 1.0 - skill))
+
+
+def _astray(shot: Shot, heading: float, power: float) -> Shot:
+    """`shot` turned by `heading` (rad) and its arrow's length times e^`power` (at most the fastest
+    shot's)."""
+    direction = math.atan2(shot.arrow[1], shot.arrow[0]) + heading
+    length = min(math.hypot(*shot.arrow) * math.exp(power), MAX_SHOT_SPEED / SHOT_POWER)
+    return Shot(shot.start, (length * math.cos(direction), length * math.sin(direction)), shot.grab, shot.angle)
 
 
 def spoil(shot: Shot, skill: float, rng: random.Random) -> Shot:
     """`shot` as a golfer of `skill` plays it: about 7° of aim and 20 % of power astray at skill 0."""
-    miss = max(0.0, min(1.0, 1.0 - skill))
+    miss = _miss(skill)
     if miss == 0.0:
         return shot
-    heading = math.atan2(shot.arrow[1], shot.arrow[0]) + rng.gauss(0.0, 0.12 * miss)
-    length = min(math.hypot(*shot.arrow) * math.exp(rng.gauss(0.0, 0.2 * miss)), MAX_SHOT_SPEED / SHOT_POWER)
-    return Shot(shot.start, (length * math.cos(heading), length * math.sin(heading)), shot.grab, shot.angle)
+    return _astray(shot, rng.gauss(0.0, AIM_SPREAD * miss), rng.gauss(0.0, POWER_SPREAD * miss))
 
 
 @dataclass

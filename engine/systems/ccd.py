@@ -108,10 +108,10 @@ def _body_hits(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple) ->
     arm_hits = np.empty(len(pairs))
     count = body_pair_hits(lv, ln, first, reach, body_first, pairs, state, rows, radius, thickness, meet, sweep_all,
                            LINEAR_SLOP, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP, hits, arm_hits)
+    if sweep_all:  # (also for a wall's impact alone: the ball pushing the one it put back)
+        _together(state, rows, radius, pairs, hits)
     if count == 0:
         return 0
-    if sweep_all:
-        _together(state, rows, radius, pairs, hits)
     for g in range(len(pairs)):
         hit = arm_hits[g]
         if hit >= 1.0:

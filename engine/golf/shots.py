@@ -16,17 +16,17 @@ import numpy as np
 
 from polygolf.engine.assembly.assemble import assemble
 from polygolf.engine.assembly.spec import DynamicPart, WallPart
-from polygolf.engine.components import Ball, Body, Collider, HoleState, Material
+from polygolf.engine.components import Ball, Body, HoleState, Material
 from polygolf.engine.golf.holes import Hole
 from polygolf.engine.golf.world import DEFAULT_BALL, hole_spec
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.physics.body import ANGLE, Selection, X, Y
+from polygolf.engine.physics.mass import mass_properties
 from polygolf.engine.physics.motion import came_to_rest
-from polygolf.engine.physics.polygon import Outline
+from polygolf.engine.physics.polygon import Outline, bounding_radius
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import FRAME_DT
-from polygolf.engine.physics.shot import clamp_arrow
-from polygolf.engine.systems.shot import push_resting
+from polygolf.engine.physics.shot import clamp_arrow, shot_velocity
 
 
 @dataclass(frozen=True)
@@ -87,13 +87,11 @@ def simulate_shots(hole: Hole, shots: Sequence[Shot], preset: Knobs | str = "bal
         return []
     alone = hole_spec(hole, shape)
     template = alone.bodies[0]
-    # Every ball rests at its shot's start until the shot pushes it (the shot stage's push, given
-    # before the first step, as that stage gives it at the start of the first frame of a shot played
-    # alone); each is built as the template with its own place, not by `dataclasses.replace`.
-    balls = [DynamicPart(f"shot-{k}", template.outline, s.start, template.density, template.material, s.angle,
-                         template.velocity, template.spin, template.drag, True, template.top_speed,
-                         (Ball(*s.start), HoleState(par=hole.spec.par, max_strokes=99)))
-             for k, s in enumerate(shots)]
+    props = mass_properties(template.outline, template.density)
+    radius = bounding_radius(template.outline)
+    balls = [_pushed(f"shot-{k}", template, shot, props.mass, props.inertia, radius,
+                     (Ball(*shot.start), HoleState(par=hole.spec.par, max_strokes=99)))
+             for k, shot in enumerate(shots)]
     turned = [replace(part, angle=angle) for part, angle in zip(alone.kinematic, windmills)]
     walls = alone.walls + [WallPart(tuple(outline), Material()) for outline in obstacles]
     # Impacts only tell a listener what was struck: without a path, nobody listens (and a fan strikes
@@ -105,10 +103,6 @@ def simulate_shots(hole: Hole, shots: Sequence[Shot], preset: Knobs | str = "bal
         esper.switch_world(sim.world)
         # Entity order = shots' order; scoring asks esper the same question (one list for both).
         rows = sorted(esper.get_components(Body, Ball, HoleState))
-        radius = esper.component_for_entity(rows[0][0], Collider).radius
-        for (_, (body, _, _)), shot in zip(rows, shots):
-            arrow = clamp_arrow(shot.arrow) or (0.0, 0.0)
-            push_resting(body, radius, (shot.start[0] + shot.grab[0], shot.start[1] + shot.grab[1]), arrow)
         done: list[float | None] = [None] * len(shots)
         paths: list[list[tuple[float, float]]] = [[] for _ in shots]
         contact: list[int | None] = [None] * len(shots)
@@ -150,6 +144,23 @@ def simulate_shots(hole: Hole, shots: Sequence[Shot], preset: Knobs | str = "bal
                 for k, ((x, y, angle), (_, (_, _, state))) in enumerate(zip(poses, rows))]
     finally:
         sim.close()
+
+
+def _pushed(name: str, template: DynamicPart, shot: Shot, mass: float, inertia: float, radius: float,
+            extras: tuple[object, ...]) -> DynamicPart:
+    """The template's ball at rest at the shot's start, already given the shot's push: the velocity
+    `push_resting` adds to a resting ball (the shot stage's way, as at the start of the first frame
+    of the shot played alone; the same floats, the grab measured from the centre the same way),
+    without a thousand pushes on built bodies. A world that does not turn bodies drops the spin."""
+    velocity, spin, asleep = template.velocity, template.spin, template.asleep
+    arrow = clamp_arrow(shot.arrow)
+    if arrow is not None:
+        x, y = shot.start
+        dvx, dvy, dspin = shot_velocity(mass, inertia, radius, (x + shot.grab[0]) - x, (y + shot.grab[1]) - y, *arrow)
+        if dvx != 0.0 or dvy != 0.0:
+            velocity, spin, asleep = (velocity[0] + dvx, velocity[1] + dvy), spin + dspin, False
+    return DynamicPart(name, template.outline, shot.start, template.density, template.material, shot.angle, velocity,
+                       spin, template.drag, asleep, template.top_speed, extras)
 
 
 def fan(start: tuple[float, float], directions: int, powers: list[float]) -> list[Shot]:

@@ -10,8 +10,8 @@ from polygolf.engine.physics.shot import shot_velocity
 def push_resting(body: Body, radius: float, origin: tuple[float, float], vector: tuple[float, float]) -> float | None:
     """A shot on a body of bounding radius `radius`: pushed at `origin` along the arrow `vector`,
     but only while it rests. Returns the speed it was given (0.0 for a click: nothing given), or
-    None if it was moving. (The one way a shot moves a ball: the shot stage's, and a fan's, whose
-    balls all rest when it begins.)"""
+    None if it was moving. (The shot stage's way; a fan of shots builds its balls already given this
+    velocity, `golf.shots`.)"""
     x, y, _, vx, vy, spin, mass, inertia, _, inv_inertia = body.motion()
     if (vx != 0.0 or vy != 0.0 or spin != 0.0) and not body.asleep:
         return None

@@ -315,7 +315,7 @@ def _autoplay(args: argparse.Namespace) -> int:
     at `--skill`); saved and recorded like any round."""
     import random
 
-    from polygolf.engine.golf.holes import find_course
+    from polygolf.engine.golf.holes import Hole, find_course
     from polygolf.game.app import build_nine_here
     from polygolf.game.golfer_process import SEARCH_EFFORT, Question, answer, origin_of
     from polygolf.game.session import RANDOM_NINE, Game, par_text, strokes_text
@@ -330,6 +330,10 @@ def _autoplay(args: argparse.Namespace) -> int:
         raise ValueError(game.problems[0] if game.problems else "no course could be read")
     else:
         course = find_course(game.courses, args.course)
+    launched = [k for k, hole in enumerate(course.holes, 1) if isinstance(hole, Hole) and hole.spec.launch is not None]
+    if launched:  # its ball is launched again and again: it never rests for a stroke
+        raise ValueError(f"{course.name}: hole {launched[0]} launches the ball itself (a collision test); "
+                         "the golfer cannot play it")
     game.courses, game.course_index = [course], 0  # this round's course, not saved as the menu's choice
     game.players = player_names(args.players, args.names) or ["Golfer"]
     if args.shape is not None:

@@ -66,7 +66,7 @@ def verify(record: RoundRecord, course: Course) -> list[tuple[str, bool]]:
                               f"(frame {recorded.frames})", False))
                 break
             same = ended.final == recorded.final and ended.frames == recorded.frames
-            scores = ", ".join(str(b.strokes + b.penalties) for b in ended.final)
+            scores = ", ".join(str(player.state.score) for player in hole.players)
             lines.append((f"{label}: {'identical' if same else 'DIFFERENT'} (frame {ended.frames} of "
                           f"{recorded.frames}; scores {scores})", same))
             session.finish_hole()

@@ -157,9 +157,9 @@ def test_scoring_counts_strokes_and_holes(world):
     ball = esper.create_entity(Body.dynamic(0.0, 0.0, 1.0, 1.0), Ball(0.0, 0.0), state)
     other = HoleState(par=3, max_strokes=10)
     second = esper.create_entity(Body.dynamic(5.0, 0.0, 1.0, 1.0), Ball(5.0, 0.0), other)
+    res.events.emit("shot", second)
     for _ in range(2):
         res.events.emit("shot", ball)
-    res.events.emit("shot", second)
     res.events.emit("penalty", ball, 2)
     res.events.emit("holed", ball)
     res.events.emit("shot", ball)  # after the hole is over: not counted
@@ -182,6 +182,55 @@ def test_scoring_picks_the_ball_up_after_the_last_stroke(world):
     esper.process()
     assert state.picked_up and state.finished and state.score == 2
     assert not esper.has_component(ent, Collider)  # it left the green: nothing can hit it
+
+
+def test_a_shot_marks_where_every_resting_ball_lies_for_the_water_to_put_it_back(world):
+    """Another player's shot may knock a resting ball into the water: it goes back where it lay then,
+    not to the spot it was last shot from."""
+    esper.add_processor(ShotProcessor(ctx()))
+    shooter, body, shot = ball_entity(asleep=True)
+    other = make_body(SQUARE, (4.0, 1.5), 1.0, asleep=True)
+    marker = Ball(1.0, 1.0)  # shot from (1, 1) earlier; it rests at (4, 1.5) now
+    esper.create_entity(other, make_collider(SQUARE, Material()), marker)
+    rolling = make_body(SQUARE, (7.0, 0.0), 1.0, velocity=(1.0, 0.0))
+    still_rolling = Ball(6.0, 0.0)
+    esper.create_entity(rolling, make_collider(SQUARE, Material()), still_rolling)
+    shot.request((0.0, 0.0), (1.0, 0.0))
+    esper.process()
+    assert not body.asleep and (esper.component_for_entity(shooter, Ball).rest_x,
+                                esper.component_for_entity(shooter, Ball).rest_y) == (0.0, 0.0)
+    assert (marker.rest_x, marker.rest_y) == (4.0, 1.5)
+    assert (still_rolling.rest_x, still_rolling.rest_y) == (6.0, 0.0)  # not resting: its spot stays
+
+
+def test_a_hole_never_scores_beyond_the_pickup(world):
+    """A last stroke into the water (or a restart while it rolls) adds a penalty: the ball is picked
+    up at the limit, and the hole scores the limit."""
+    res = ctx()
+    esper.add_processor(ScoringProcessor(res))
+    state = HoleState(par=3, max_strokes=10)
+    body = Body.dynamic(0.0, 0.0, 1.0, 1.0, asleep=True)
+    ent = esper.create_entity(body, Ball(0.0, 0.0), state, make_collider(SQUARE, Material()))
+    for _ in range(10):
+        res.events.emit("shot", ent)
+    res.events.emit("penalty", ent, 1)
+    esper.process()
+    assert (state.strokes, state.penalties, state.score, state.picked_up) == (10, 1, 10, True)
+
+
+def test_a_ball_knocked_into_the_cup_by_another_counts_the_putt_it_was_spared(world):
+    res = ctx()
+    esper.add_processor(ScoringProcessor(res))
+    shooter_state, knocked_state = HoleState(par=2, max_strokes=10), HoleState(par=2, max_strokes=10)
+    shooter = esper.create_entity(Body.dynamic(0.0, 0.0, 1.0, 1.0), Ball(0.0, 0.0), shooter_state)
+    knocked = esper.create_entity(Body.dynamic(5.0, 0.0, 1.0, 1.0), Ball(5.0, 0.0), knocked_state)
+    res.events.emit("shot", shooter)
+    res.events.emit("holed", knocked)  # never shot: not a hole in none
+    esper.process()
+    assert (knocked_state.strokes, knocked_state.holed) == (1, True)
+    res.events.emit("holed", shooter)  # its own shot: counted once
+    esper.process()
+    assert (shooter_state.strokes, shooter_state.holed) == (1, True)
 
 
 def test_launcher_sends_the_ball_from_the_tee_again_and_again(world):

@@ -183,6 +183,13 @@ def test_autoplay_saves_the_round_bests_and_a_replay_that_verifies(capsys):
     assert "verified: 3 of 3 holes" in capsys.readouterr().out
 
 
+def test_autoplay_refuses_a_course_whose_ball_is_launched_for_it(capsys):
+    """Collision Test launches the ball again and again: it never rests for the golfer's stroke."""
+    assert main(["autoplay", "--course", "collision-test", "--preset", "fast"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "hole 1 launches the ball itself" in err[0]
+
+
 def test_a_tampered_replay_fails_verify_and_a_broken_one_is_refused(tmp_path, capsys):
     assert autoplay() == 0
     path = next((data_dir() / "replays").glob("*.json"))

@@ -18,4 +18,6 @@ class HoleState:
 
     @property
     def score(self) -> int:
-        return self.strokes + self.penalties
+        """Strokes and penalties, at most `max_strokes`: a ball is picked up there, so a last stroke
+        into the water (or a restart while it rolls) does not score beyond it."""
+        return min(self.strokes + self.penalties, self.max_strokes)

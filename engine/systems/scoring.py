@@ -11,7 +11,8 @@ class ScoringProcessor(esper.Processor):
     """Last stage: counts this substep's strokes ("shot"), penalties and balls dropping ("holed") on
     the `HoleState` of the ball they happened to (one per player), and picks a ball up once it rests
     after the last stroke allowed. A finished ball leaves the green: its collider goes, so the balls
-    still in play neither hit it in the cup nor where it was picked up.
+    still in play neither hit it in the cup nor where it was picked up. A ball that another's shot
+    knocks into the cup is holed with a stroke added, the putt it was spared (never a hole in none).
 
     A ball's state can change only through an event or by its coming to rest, so only those balls
     are looked at (all of them when the world's entities change); and a rest matters only to a ball
@@ -27,6 +28,7 @@ class ScoringProcessor(esper.Processor):
         self._rested = np.zeros(0, dtype=np.int64)
         self._listed: list | None = None  # the balls `_waiting` is about
         self._waiting = False  # whether a ball still in play is on its last stroke
+        self._shooter: int | None = None  # the ball of the last shot taken
 
     def quiet(self) -> bool:
         """Whether its next call would pass over the substep: no event, no ball on its last stroke,
@@ -42,10 +44,13 @@ class ScoringProcessor(esper.Processor):
                 continue
             if kind == "shot":
                 hole.strokes += 1
+                self._shooter = ent
             elif kind == "penalty":
                 hole.penalties += amount
             elif kind == "holed":
                 hole.holed = True
+                if self._shooter is not None and ent != self._shooter:
+                    hole.strokes += 1  # knocked in by another's shot: the putt it was spared
         balls = esper.get_components(Body, Ball, HoleState)
         if not fired and balls is self._listed and not self._waiting:
             return  # no event, and no ball a rest would pick up

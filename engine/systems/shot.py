@@ -25,7 +25,7 @@ def push_resting(body: Body, radius: float, origin: tuple[float, float], vector:
 
 class ShotProcessor(esper.Processor):
     """Turns a requested shot into velocity, only while the ball is at rest; remembers that resting
-    place and says so ("shot": the scoring stage counts it)."""
+    place, and every other resting ball's, and says so ("shot": the scoring stage counts it)."""
 
     name = "shot"
 
@@ -52,9 +52,13 @@ class ShotProcessor(esper.Processor):
                 continue
             if speed == 0.0:
                 continue
-            ball = esper.try_component(ent, Ball)
-            if ball is not None:
-                ball.rest_x, ball.rest_y = x, y  # where a hazard puts it back
+            # Where a hazard puts a ball back: where it lay when this shot was taken, for the ball
+            # shot and for every other ball at rest, which the shot may knock into the water.
+            for other, (other_body, ball) in esper.get_components(Body, Ball):
+                if other == ent:
+                    ball.rest_x, ball.rest_y = x, y
+                elif other_body.asleep:
+                    ball.rest_x, ball.rest_y = other_body.x, other_body.y
             shot.accepted += 1
             self.events.emit("shot", ent)
             self.events.strike("shot", speed, x, y, (ent, -1))

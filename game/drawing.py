@@ -393,3 +393,22 @@ class PlayerBallArt(PolygonArt):
 def draw_turn_ring(x: float, y: float, radius: float, colour) -> None:
     """A ring around the ball whose turn it is."""
     arcade.draw_circle_outline(x, y, radius * 1.45, colour, 0.07, num_segments=40)
+
+
+def fit_width(text: arcade.Text, full: str, width: float, size: float, smallest: float = 9.0) -> None:
+    """Show `full` in `text` at most `width` pixels wide: at `size`, else as much smaller as it needs
+    (down to `smallest`), else at `smallest` cut short with an ellipsis. A long player name or a
+    narrow window then never runs text into its neighbours."""
+    text.text, text.font_size = full, size
+    if text.content_width <= width:
+        return
+    for _ in range(3):  # widths scale almost linearly with the size; a pass or two settles rounding
+        text.font_size = max(smallest, text.font_size * width / max(text.content_width, 1.0))
+        if text.content_width <= width or text.font_size <= smallest:
+            break
+    if text.content_width <= width:
+        return
+    keep = len(full)
+    while keep > 1 and text.content_width > width:
+        keep -= 1
+        text.text = full[:keep].rstrip() + "…"

@@ -212,7 +212,7 @@ def test_a_full_round_of_nine_holes_ends_on_the_scorecard_with_the_right_totals(
     assert {r.number: r.strokes for r in round_.results} == scores
     assert round_.total_strokes() == sum(scores.values())
     assert round_.total_par() == sum(h.spec.par for h in game.course.playable)
-    totals = [text.text for text, col, row in results.cells if col == results.columns - 1]
+    totals = [cell.text.text for cell in results.cells if cell.col == results.columns - 1]
     diff = round_.total_strokes() - round_.total_par()
     assert totals == ["Total", str(round_.total_par()), str(round_.total_strokes()), "E" if diff == 0 else f"{diff:+d}"]
     assert_not_blank(snapshot(window, shots_dir, "results-played"), "results")

@@ -92,7 +92,7 @@ def test_two_players_play_to_the_scorecard_and_see_their_bests_next_round(window
                       for k in (0, 1)]
     winners = [name for name, total in zip(round_.players, totals) if total == min(totals)]
     assert (f"{winners[0]} wins" if len(winners) == 1 else "A tie") in results.summary.text
-    player_rows = [text.text for text, col, row in results.cells if col == 0]
+    player_rows = [cell.text.text for cell in results.cells if cell.col == 0]
     assert player_rows == ["Hole", "Par", "Player 1", "  to par, running", "Player 2", "  to par, running"]
     assert_not_blank(snapshot(window, shots_dir, "results-two-players"), "results")
     # Saved: the round in the database, its replay on disk, and it verifies.

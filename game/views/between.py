@@ -6,9 +6,14 @@ from __future__ import annotations
 import arcade
 from arcade.gui import UIAnchorLayout, UIView
 
+from polygolf.game.drawing import fit_width
 from polygolf.game.session import Game, HoleResult, Round, golf_name, par_text, penalty_text, strokes_text
 from polygolf.game.views.navigation import Navigator, window_key
 from polygolf.game.views.widgets import themed_button, title
+
+PLAYERS_FONT = 17
+BUTTON_TOP = 108  # px: the button's top edge above the window's bottom
+GAPS = (65.0, 45.0, 35.0, 65.0)  # px: headline to detail, to the players' lines, their end to the best, to the next
 
 
 def result_line(result: HoleResult, named: bool) -> str:
@@ -39,8 +44,8 @@ class BetweenView(UIView):
             total = round_.total_strokes(seat)
             lines.append(f"{'' if alone else round_.players[seat] + ': '}{result_line(result, not alone)}"
                          f"  ·  total so far {strokes_text(total)} ({par_text(total - round_.total_par(seat))})")
-        self.lines = arcade.Text("\n".join(lines), 0, 0, theme.rgba("text"), 17, anchor_x="center", anchor_y="top",
-                                 multiline=True, width=1100, align="center")
+        self.lines = arcade.Text("\n".join(lines), 0, 0, theme.rgba("text"), PLAYERS_FONT, anchor_x="center",
+                                 anchor_y="top", multiline=True, width=1100, align="center")
         hole = round_.course.holes[first.number - 1]
         best = game.best_hole(hole.id) if not isinstance(hole, Exception) else None
         self.best = arcade.Text(
@@ -54,10 +59,14 @@ class BetweenView(UIView):
                                      bold=True)
         self.skipped = arcade.Text("\n".join(round_.skipped), 0, 0, theme.rgba("arrow_strong"), 12,
                                    anchor_x="center", anchor_y="top", multiline=True, width=1000, align="center")
+        self._lines = {text: (text.text, text.font_size) for text in (self.headline, self.detail, self.best,
+                                                                        self.next_text)}
+        self._fitted_to = (0, 0)
+        self._squeeze, self._top = 1.0, 0.0
         button = themed_button(theme, "Next hole" if upcoming else "Scorecard", width=260, clicks=self.game.sound)
         button.on_click = self.on_continue  # type: ignore[method-assign]
         anchor = UIAnchorLayout()
-        anchor.add(button, anchor_x="center_x", anchor_y="bottom", align_y=60)
+        anchor.add(button, anchor_x="center_x", anchor_y="bottom", align_y=BUTTON_TOP - 48)
         self.ui.add(anchor)
 
     def on_continue(self, _event=None) -> None:
@@ -69,18 +78,45 @@ class BetweenView(UIView):
         if symbol in (arcade.key.ENTER, arcade.key.RETURN, arcade.key.SPACE):
             self.on_continue()
 
+    def _fit(self, w: int, h: int) -> None:
+        """Every line within the window: each player's line whole (all smaller if the widest does not
+        fit), the others shrunk to the width; and the gaps between them closed up (the headline
+        smaller) when the window is too low for them above the button."""
+        if (w, h) == self._fitted_to:
+            return
+        self._fitted_to = (w, h)
+        self.lines.font_size, self.lines.width = PLAYERS_FONT, 10_000  # (no wrapping: the widest line's width)
+        widest = self.lines.content_width
+        self.lines.font_size = max(9.0, PLAYERS_FONT * min(1.0, (w - 40) / max(widest, 1.0)))
+        self.lines.width = self.skipped.width = min(1100, w - 40)
+        for text, (full, size) in self._lines.items():
+            fit_width(text, full, w - 40, size)
+        # From the headline's centre down to the next hole's line: fixed gaps and the players' lines,
+        # between 35 px below the top and the button's top (with room for the skipped holes' lines).
+        gaps = sum(GAPS)
+        room = (h - 35) - (BUTTON_TOP + 27 + (self.skipped.content_height + 20 if self.round.skipped else 0))
+        self._squeeze = max(0.3, min(1.0, (room - self.lines.content_height) / gaps))
+        if self._squeeze < 1.0:
+            full, size = self._lines[self.headline]
+            fit_width(self.headline, full, w - 40, size * max(0.6, self._squeeze))
+        lowest = h - 35 - room + self.lines.content_height + gaps * self._squeeze  # the stack's end on the limit
+        self._top = min(h - 35, max(h - 130, lowest))
+
     def on_draw_before_ui(self) -> None:
         w, h = self.window.width, self.window.height
-        for text, y in ((self.headline, h - 130), (self.detail, h - 195)):
-            text.position = (w / 2, y)
+        self._fit(w, h)
+        to_detail, to_lines, to_best, to_next = (gap * self._squeeze for gap in GAPS)
+        y = self._top
+        for text, at in ((self.headline, y), (self.detail, y - to_detail)):
+            text.position = (w / 2, at)
             text.draw()
-        self.lines.position = (w / 2, h - 240)
+        self.lines.position = (w / 2, y - to_detail - to_lines)
         self.lines.draw()
-        below = h - 240 - self.lines.content_height
-        self.best.position = (w / 2, below - 35)
+        below = y - to_detail - to_lines - self.lines.content_height
+        self.best.position = (w / 2, below - to_best)
         self.best.draw()
-        self.next_text.position = (w / 2, below - 100)
+        self.next_text.position = (w / 2, below - to_best - to_next)
         self.next_text.draw()
         if self.round.skipped:
-            self.skipped.position = (w / 2, below - 135)
+            self.skipped.position = (w / 2, below - to_best - to_next - 35)
             self.skipped.draw()

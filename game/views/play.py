@@ -37,6 +37,7 @@ from polygolf.game.drawing import (
     draw_trail,
     draw_turn_ring,
     fit_camera,
+    fit_width,
     shade,
 )
 from polygolf.game.session import Game, Round, RoundPlay, penalty_text, strokes_text
@@ -58,6 +59,7 @@ ZOOM_RANGE = (1.0, 6.0)  # times the fitted zoom
 ZOOM_STEP = 1.15  # per wheel notch
 PAN_KEYS = {arcade.key.LEFT: (-1, 0), arcade.key.RIGHT: (1, 0), arcade.key.UP: (0, 1), arcade.key.DOWN: (0, -1)}
 PAN_STEP = 0.15  # of the visible width per arrow-key press
+HUD_FONT, HUD_SMALLEST, HUD_MARGIN = 15, 10, 16  # the HUD line's font size, the smallest it shrinks to, and its gaps
 HINT_ALPHA = 120  # the aim hint: the arrow drawn this faintly
 
 
@@ -79,6 +81,8 @@ class PlayView(arcade.View):
         self.banner = arcade.Text("", 0, 0, theme.rgba("text"), 13, anchor_x="center", anchor_y="center",
                                   multiline=True, width=900, align="center")
         self.banner_time = 0.0
+        self._hud_lines = {name: "" for name in self.hud_texts}  # as laid out (`place_hud`), and for what width
+        self._hud_width = 0
         self.hint_label = arcade.Text("", 0, 0, theme.rgba("text"), 11, anchor_x="center", anchor_y="center")
         self.overlay = False
         self.overlay_texts = [arcade.Text("", 0, 0, theme.rgba("text"), 11, font_name=("DejaVu Sans Mono", "monospace"))
@@ -177,10 +181,11 @@ class PlayView(arcade.View):
                    left=OVERLAY_WIDTH if self.overlay else 0, zoom=self.zoom, pan=self.pan)
         top = self.window.height - HUD_HEIGHT / 2
         self.hud_texts["course"].position = (16, top)
-        self.hud_texts["hole"].position = (self.window.width / 2, top)
+        self.hud_texts["hole"].position = (self.hud_texts["hole"].x, top)
         self.hud_texts["strokes"].position = (self.window.width - 16, top)
         self.hud_texts["players"].position = (self.window.width - 16, self.window.height - HUD_HEIGHT - 14)
         self.banner.position = (self.window.width / 2, self.window.height - HUD_HEIGHT - 40)
+        self.place_hud()
 
     def zoom_at(self, x: float, y: float, factor: float) -> None:
         """Zoom by `factor` keeping the world point under the pointer (x, y) where it is."""
@@ -209,14 +214,39 @@ class PlayView(arcade.View):
         if self.world is None:
             return
         spec, state = self.world.hole.spec, self.world.state
-        self.hud_texts["course"].text = self.round.course.name
-        self.hud_texts["hole"].text = (f"Hole {self.round.number} of {self.round.hole_count}: {spec.name}"
-                                       f"  ·  Par {spec.par}")
         extra = f" {penalty_text(state.penalties)}" if state.penalties else ""
         muted = "   [muted]" if self.game.sound.muted else ""
         thinking = "  ·  thinking…" if self.caddie.thinking else ""
-        self.hud_texts["strokes"].text = f"{self.turn_prefix()}{strokes_text(state.score)}{extra}{thinking}{muted}"
-        self.hud_texts["players"].text = self.scoreboard()
+        self.place_hud({"course": self.round.course.name,
+                        "hole": f"Hole {self.round.number} of {self.round.hole_count}: {spec.name}  ·  Par {spec.par}",
+                        "strokes": f"{self.turn_prefix()}{strokes_text(state.score)}{extra}{thinking}{muted}",
+                        "players": self.scoreboard()})
+
+    def place_hud(self, lines: dict[str, str] | None = None) -> None:
+        """The HUD's lines laid out in the window's width (again only when a line or the width
+        changed): the course at the left, the strokes at the right and the hole between them, centred
+        where there is room; all three smaller when they do not fit, the hole's name cut short last."""
+        lines = lines or self._hud_lines
+        w = self.window.width
+        if lines == self._hud_lines and w == self._hud_width:
+            return
+        self._hud_lines, self._hud_width = lines, w
+        texts = self.hud_texts
+        for name in ("course", "hole", "strokes"):
+            texts[name].text, texts[name].font_size = lines[name], HUD_FONT
+        widths = sum(texts[name].content_width for name in ("course", "hole", "strokes"))
+        if widths + 4 * HUD_MARGIN > w:
+            size = max(HUD_SMALLEST, HUD_FONT * (w - 4 * HUD_MARGIN) / widths)
+            for name in ("course", "hole", "strokes"):
+                texts[name].font_size = size
+        left = HUD_MARGIN + texts["course"].content_width + HUD_MARGIN
+        right = w - HUD_MARGIN - texts["strokes"].content_width - HUD_MARGIN
+        fit_width(texts["hole"], lines["hole"], max(right - left, 20.0), texts["hole"].font_size, HUD_SMALLEST)
+        half = texts["hole"].content_width / 2
+        centre = w / 2 if left <= w / 2 - half and w / 2 + half <= right else (left + right) / 2
+        texts["hole"].x = centre
+        fit_width(texts["players"], lines["players"], w - 2 * HUD_MARGIN, 13, HUD_SMALLEST)
+        self.banner.width = min(900, w - 40)
 
     def scoreboard(self) -> str:
         """Everyone's strokes on this hole, under the HUD when several play: 'Ann 2 · Bob 3 (in)'."""

@@ -4,14 +4,31 @@ best kept so far."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import arcade
 from arcade.gui import UIAnchorLayout, UIBoxLayout, UIView
 
+from polygolf.game.drawing import fit_width
 from polygolf.game.session import Game, HoleResult, Round, par_text, strokes_text
 from polygolf.game.views.navigation import Navigator, window_key
 from polygolf.game.views.widgets import themed_button, title
 
-LABEL_WIDTH = 200.0
+LABEL_WIDTH = (110.0, 220.0)  # the label column: fits the longest label, within these
+CELL_WIDTH = 96.0
+BELOW_TABLE = 200.0  # px under the table: the winner, the best, the notes and the buttons
+
+
+@dataclass(slots=True)
+class Cell:
+    """A scorecard cell: its text, column and row, its full and short strings and its own size."""
+
+    text: arcade.Text
+    col: int
+    row: int
+    full: str
+    short: str
+    size: float
 
 
 def hole_cell(result: HoleResult) -> str:
@@ -59,7 +76,7 @@ class ResultsView(UIView):
         self.warning = arcade.Text(" ".join(w.removeprefix("polygolf: ") for w in warnings), 0, 0,
                                    theme.rgba("arrow_strong"), 12, anchor_x="center", anchor_y="top", multiline=True,
                                    width=1100, align="center")
-        self.cells: list[tuple[arcade.Text, int, int]] = []  # text, column, row
+        self.cells: list[Cell] = []
         results = round_.results
         alone = len(round_.players) == 1
         rows = [("Hole", [str(r.number) for r in results], "Total"),
@@ -70,18 +87,25 @@ class ResultsView(UIView):
             rows.append(("Score" if alone else name, [hole_cell(r) for r in card], str(strokes)))
             rows.append(("To par, running" if alone else "  to par, running", running(card), par_text(strokes - par)))
         self.player_rows = {2 + 2 * seat for seat in range(len(round_.players))}
+        self.running_rows = {3 + 2 * seat for seat in range(len(round_.players))}
         for row, (label, values, total) in enumerate(rows):
             for col, value in enumerate([label, *values, total]):
                 bold = row == 0 or col == len(values) + 1 or (col == 0 and row in self.player_rows | {1})
-                size = 13 if row >= 2 and row not in self.player_rows else 15
-                self.cells.append((arcade.Text(value, 0, 0, theme.rgba("text"), size,
-                                               anchor_x="left" if col == 0 else "center", anchor_y="center",
-                                               bold=bold), col, row))
+                size = 13 if row in self.running_rows else 15
+                # A hole's score without its "(+1)" where the cell is too narrow: the row below has it.
+                short = value.split(" (")[0] if row in self.player_rows and 0 < col <= len(values) else value
+                self.cells.append(Cell(arcade.Text(value, 0, 0, theme.rgba("text"), size,
+                                                   anchor_x="left" if col == 0 else "center", anchor_y="center",
+                                                   bold=bold), col, row, value, short, size))
         self.columns = len(results) + 2
         self.rows = len(rows)
+        self._label_width = min(LABEL_WIDTH[1], max(LABEL_WIDTH[0], 20.0 + max(
+            cell.text.content_width for cell in self.cells if cell.col == 0)))
+        self._sized_for: tuple[int, int] | None = None
         self.note = arcade.Text("* picked up after the last stroke allowed"
                                 if any(r.picked_up for card in round_.cards for r in card) else "", 0, 0,
                                 theme.rgba("text"), 12, anchor_x="center", anchor_y="center")
+        self._lines = {text: (text.text, text.font_size) for text in (self.summary, self.best, self.note)}
         row_box = UIBoxLayout(vertical=False, space_between=16)
         for text, action in (("Play again", self.on_again), ("Main menu", self.on_menu)):
             button = themed_button(theme, text, width=220, clicks=self.game.sound)
@@ -115,36 +139,94 @@ class ResultsView(UIView):
         if symbol in (arcade.key.ENTER, arcade.key.RETURN, arcade.key.ESCAPE):
             self.on_menu()
 
+    def _fit(self, w: int, h: int) -> tuple[float, float, float, float, list[int]]:
+        """(label column width, cell width, cell height, the table's top, the rows shown) for this
+        window, every cell's text fitted when the window is resized: a row's cells share one size,
+        as large as its widest cell allows (a hole's score without its "(+1)" if that would be under
+        10 points; a long name cut short); the running rows are left out where the window is too
+        low for every row to be readable."""
+        label_w = min(self._label_width, 0.3 * (w - 60))
+        cell_w = min(CELL_WIDTH, (w - 60 - label_w) / (self.columns - 1))
+        top = h - (95 if h >= 600 else 62)
+        room = top - BELOW_TABLE
+        shown = [row for row in range(self.rows) if room / self.rows >= 22 or row not in self.running_rows]
+        cell_h = min(40.0, room / len(shown))
+        if self._sized_for != (w, h):
+            self._sized_for = (w, h)
+            self.title.font_size = 34 if h >= 600 else 24
+            for rows in ({0, 1}, self.player_rows, self.running_rows):  # alike rows alike
+                cells = [cell for cell in self.cells if cell.row in rows]
+                _fit_row([cell for cell in cells if cell.col == 0], label_w - 14, cell_h, 11)
+                _fit_row([cell for cell in cells if cell.col > 0], cell_w - 6, cell_h, 10)
+            for text, (full, size) in self._lines.items():
+                fit_width(text, full, w - 40, size)
+            self.warning.width = min(1100, w - 40)
+        return label_w, cell_w, cell_h, top, shown
+
     def on_draw_before_ui(self) -> None:
         theme = self.game.theme
         w, h = self.window.width, self.window.height
-        self.title.position = (w / 2, h - 50)
+        label_w, cell_w, cell_h, top, shown = self._fit(w, h)
+        self.title.position = (w / 2, (h + top) / 2)
         self.title.draw()
-        cell_w = min(96.0, (w - 60 - LABEL_WIDTH) / (self.columns - 1))
-        cell_h = min(40.0, (h - 300) / self.rows)
-        width = LABEL_WIDTH + cell_w * (self.columns - 1)
+        width = label_w + cell_w * (self.columns - 1)
         left = (w - width) / 2
-        top = h - 95
+        height = len(shown) * cell_h
 
         def x_of(col: int) -> float:
-            return left if col == 0 else left + LABEL_WIDTH + (col - 1) * cell_w
+            return left if col == 0 else left + label_w + (col - 1) * cell_w
 
-        for row in range(self.rows):
-            y0 = top - (row + 1) * cell_h
+        for place, row in enumerate(shown):
+            y0 = top - (place + 1) * cell_h
             colour = theme.rgba("button") if row == 0 else theme.rgba("panel")
             arcade.draw_lrbt_rectangle_filled(left, left + width, y0, y0 + cell_h, colour)
         for col in range(self.columns + 1):
             x = x_of(col) if col < self.columns else left + width
-            arcade.draw_line(x, top, x, top - self.rows * cell_h, theme.rgba("text"), 1)
-        for row in range(self.rows + 1):
-            y = top - row * cell_h
-            strong = row in self.player_rows or row in (1, 2)
-            arcade.draw_line(left, y, left + width, y, theme.rgba("text"), 2 if strong else 1)
-        for text, col, row in self.cells:
-            x = x_of(col) + 10 if col == 0 else x_of(col) + cell_w / 2
-            text.position = (x, top - (row + 0.5) * cell_h)
-            text.draw()
-        bottom = top - self.rows * cell_h
+            arcade.draw_line(x, top, x, top - height, theme.rgba("text"), 1)
+        for place in range(len(shown) + 1):
+            below = shown[place] if place < len(shown) else -1
+            strong = below in self.player_rows or below in (1, 2) or place == len(shown)
+            arcade.draw_line(left, top - place * cell_h, left + width, top - place * cell_h, theme.rgba("text"),
+                             2 if strong else 1)
+        places = {row: place for place, row in enumerate(shown)}
+        for cell in self.cells:
+            if cell.row in places:
+                x = x_of(cell.col) + 10 if cell.col == 0 else x_of(cell.col) + cell_w / 2
+                cell.text.position = (x, top - (places[cell.row] + 0.5) * cell_h)
+                cell.text.draw()
+        bottom = top - height
         for text, dy in ((self.summary, 35), (self.best, 65), (self.note, 90), (self.warning, 108)):
             text.position = (w / 2, bottom - dy)
             text.draw()
+
+
+def _fit_row(cells: list[Cell], width: float, height: float, readable: float) -> None:
+    """One size for these cells of a row: the largest at which each fits `width` and the row's
+    `height`, at most their own; with their short strings if the full ones would be under
+    `readable` points; at least 8 points, anything still too wide cut short."""
+    if not cells:
+        return
+
+    def size_for(strings: list[str]) -> float:
+        size = min(cell.size for cell in cells)
+        for cell, string in zip(cells, strings):
+            cell.text.text, cell.text.font_size = string, cell.size
+            if cell.text.content_width > width:
+                size = min(size, cell.size * width / cell.text.content_width)
+        size = max(8.0, min(size, 0.55 * height))
+        while size > 8.0 and any(_width_at(cell.text, size) > width for cell in cells):
+            size = max(8.0, size - 0.5)  # (a width is not quite proportional to the size)
+        return size
+
+    strings = [cell.full for cell in cells]
+    size = size_for(strings)
+    if size < readable and any(cell.short != cell.full for cell in cells):
+        strings = [cell.short for cell in cells]
+        size = size_for(strings)
+    for cell, string in zip(cells, strings):
+        fit_width(cell.text, string, width, size, size)
+
+
+def _width_at(text: arcade.Text, size: float) -> float:
+    text.font_size = size
+    return text.content_width

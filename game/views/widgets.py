@@ -30,3 +30,4 @@ def themed_button(theme: Theme, text: str, width: int = 320, height: int = 48, f
 
 def title(text: str, theme: Theme, size: int = 40) -> arcade.Text:
     return arcade.Text(text, 0, 0, theme.rgba("text"), size, anchor_x="center", anchor_y="center", bold=True)
+

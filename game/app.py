@@ -108,7 +108,7 @@ def build_nine_here(seed: int):
     import sys
     import time
 
-    from polygolf.engine.golf.nine import NINE, build_nine
+    from polygolf.engine.golf.nine import NINE, build_nine, nine_folder
     from polygolf.game.startup import prepare_physics
 
     prepare_physics()  # here, not in each worker process: they load what it compiled
@@ -117,7 +117,10 @@ def build_nine_here(seed: int):
     def progress(k: int, total: int) -> None:
         print(f"polygolf: Random nine, seed {seed}: building hole {k} of {total}...", file=sys.stderr, flush=True)
 
-    course = build_nine(seed, progress=progress)
+    try:
+        course = build_nine(seed, progress=progress)
+    except OSError as exc:
+        raise ValueError(f"cannot write Random nine to {nine_folder(seed)}: {exc.strerror or exc}") from exc
     print(f"polygolf: Random nine, seed {seed}: {NINE} holes built and proven in {time.perf_counter() - started:.0f} s",
           file=sys.stderr)
     return course

@@ -80,6 +80,8 @@ def names_arg(text: str) -> list[str]:
     if not 1 <= len(names) <= MAX_PLAYERS or not all(names) or any(len(n) > 20 for n in names):
         raise argparse.ArgumentTypeError(f"{text!r}: give 1 to {MAX_PLAYERS} names of 1 to 20 characters, "
                                          "separated by commas")
+    if not all(name.isprintable() for name in names):  # (bytes that are not UTF-8 come as unprintable escapes)
+        raise argparse.ArgumentTypeError(f"{text!r}: names are printable text (no control characters; UTF-8)")
     if len(set(names)) != len(names):
         raise argparse.ArgumentTypeError(f"{text!r}: every player needs a different name")
     return names
@@ -397,9 +399,10 @@ def _replay(args: argparse.Namespace) -> int:
 
         return _window(run_replay, args.file)
     startup.prepare_physics()
-    lines = verify(record, course)
-    for line, _ in lines:
-        print(line)
+    lines = []
+    for line, same in verify(record, course):
+        print(line, flush=True)  # as each hole is played: a long round says how it goes
+        lines.append((line, same))
     ok = bool(lines) and all(same for _, same in lines) and len(lines) == len(record.holes)
     print(f"{args.file}: {'verified' if ok else 'does NOT match'}: {len(lines)} of {len(record.holes)} holes "
           "simulated again")

@@ -4,6 +4,7 @@ only if every hole ends with every ball's strokes, flags and body state bit for 
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from pathlib import Path
 
 from polygolf.engine.golf.holes import Course, load_all_courses
@@ -22,7 +23,7 @@ def load_for_replay(path: Path) -> tuple[RoundRecord, Course]:
     courses, _ = load_all_courses()
     course = next((c for c in courses if c.id == record.course), None)
     seed = record.course.removeprefix(f"{RANDOM_NINE}-")
-    if course is None and record.course.startswith(f"{RANDOM_NINE}-") and seed.isdigit():
+    if course is None and record.course.startswith(f"{RANDOM_NINE}-") and seed.isdigit() and len(seed) < 20:
         course = load_nine(int(seed))  # a Random nine: the one built in the data folder, if it still is
     if course is None:
         raise ReplayError(f"{path}: course {record.course!r} is not in this game's content")
@@ -47,30 +48,29 @@ def replay_session(record: RoundRecord, course: Course) -> RoundPlay:
     return RoundPlay(round_, record.shape, record.shape_label, record.preset, feed=feed)
 
 
-def verify(record: RoundRecord, course: Course) -> list[tuple[str, bool]]:
-    """Play the round again headless: (line, matched) for each recorded hole."""
+def verify(record: RoundRecord, course: Course) -> Iterator[tuple[str, bool]]:
+    """Play the round again headless: (line, matched) for each recorded hole, as each is played (a
+    long round says how it goes)."""
     session = replay_session(record, course)
-    lines = []
     try:
         for recorded in record.holes:
             hole = session.hole
             label = f"hole {recorded.position + 1} {recorded.hole}"
             if hole is None or session.round.position != recorded.position or hole.hole.id != recorded.hole:
-                lines.append((f"{label}: not the hole the round plays next", False))
+                yield f"{label}: not the hole the round plays next", False
                 break
             while session.ended is None and session.frame <= recorded.frames + SLACK_FRAMES:
                 session.step()
             ended = session.ended
             if ended is None:
-                lines.append((f"{label}: not finished {SLACK_FRAMES} frames after its recorded end "
-                              f"(frame {recorded.frames})", False))
+                yield (f"{label}: not finished {SLACK_FRAMES} frames after its recorded end "
+                       f"(frame {recorded.frames})", False)
                 break
             same = ended.final == recorded.final and ended.frames == recorded.frames
             scores = ", ".join(str(player.state.score) for player in hole.players)
-            lines.append((f"{label}: {'identical' if same else 'DIFFERENT'} (frame {ended.frames} of "
-                          f"{recorded.frames}; scores {scores})", same))
+            yield (f"{label}: {'identical' if same else 'DIFFERENT'} (frame {ended.frames} of {recorded.frames}; "
+                   f"scores {scores})", same)
             session.finish_hole()
             session.start_hole()
     finally:
         session.close()
-    return lines

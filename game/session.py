@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Collection
 from dataclasses import dataclass, field
 from datetime import datetime, timezone
 from pathlib import Path
@@ -56,6 +56,11 @@ def penalty_text(n: int) -> str:
 COMPUTER = "CPU"  # a player named so ("CPU 2" for a second one) is played by the search golfer
 HINTS = {"off": None, "rough": 0.5, "good": 0.8, "exact": 1.0}  # the aim hint's setting -> its golfer's skill
 SKILLS = {"rough": 0.5, "good": 0.8, "exact": 1.0}  # the computer opponent's setting -> its skill
+
+
+def _one_of(value: object, options: Collection[str]) -> str | None:
+    """A saved choice if it is still one of `options` (a setting edited to a list or a number is not)."""
+    return value if isinstance(value, str) and value in options else None
 
 
 def is_computer(name: str) -> bool:
@@ -421,13 +426,13 @@ class Game:
     def apply_settings(self, saved: dict[str, object]) -> None:
         """Take what was saved; a value that no longer fits (a theme or course gone) is left at its default."""
         themes = [t.name for t in self.themes]
-        if saved.get("theme") in themes:
+        if _one_of(saved.get("theme"), themes):
             self.theme_index = themes.index(saved["theme"])
         seed = saved.get("random_seed")
         if isinstance(seed, int) and not isinstance(seed, bool) and 0 <= seed < 2**63:
             self.random_seed = seed
         courses = [c.id for c in self.courses]
-        if saved.get("course") in courses:
+        if _one_of(saved.get("course"), courses):
             self.course_index = courses.index(saved["course"])
         elif saved.get("course") == RANDOM_NINE:
             self.course_index = len(self.courses)
@@ -439,16 +444,16 @@ class Game:
             except ValueError:
                 pass
         names = saved.get("players")
-        if isinstance(names, list) and 1 <= len(names) <= MAX_PLAYERS and all(isinstance(n, str) and n.strip()
-                                                                               for n in names):
+        if isinstance(names, list) and 1 <= len(names) <= MAX_PLAYERS and all(
+                isinstance(n, str) and n.strip() and n.isprintable() for n in names):
             self.players = [n.strip()[:20] for n in names]
         volume = saved.get("volume")
         if isinstance(volume, int | float) and 0.0 <= volume <= 1.0:
             self.sound.volume = float(volume)  # the sound board's volume is the one setting
         self.guide_seen = saved.get("guide_seen") is True
-        self.hint = saved["hint"] if saved.get("hint") in HINTS else self.hint
+        self.hint = _one_of(saved.get("hint"), HINTS) or self.hint
         self.preview = saved["preview"] if isinstance(saved.get("preview"), bool) else self.preview
-        self.computer_skill = saved["computer_skill"] if saved.get("computer_skill") in SKILLS else self.computer_skill
+        self.computer_skill = _one_of(saved.get("computer_skill"), SKILLS) or self.computer_skill
 
     def save_settings(self) -> None:
         if self.store is not None:

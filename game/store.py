@@ -63,6 +63,22 @@ class Best:
     when: str
 
 
+# Columns a best is read from, with the type each must hold: SQLite keeps whatever is written, so a
+# row edited by hand to another type is passed over rather than shown (or sorted, or subtracted) wrongly.
+HOLE_TYPES = {"r.course": "text", "h.hole": "text", "h.position": "integer", "h.name": "text", "r.shape": "text",
+              "h.strokes": "integer", "h.par": "integer", "c.name": "text", "r.finished_at": "text"}
+ROUND_TYPES = {"r.course": "text", "r.course_name": "text", "r.shape": "text", "c.strokes": "integer",
+               "c.par": "integer", "c.name": "text", "r.finished_at": "text"}
+
+
+def _typed(columns: dict[str, str]) -> str:
+    return " AND ".join(f"typeof({column}) = '{kind}'" for column, kind in columns.items())
+
+
+class OtherSchema(Exception):
+    """The database was written by another version of the game (a newer one, as a rule)."""
+
+
 class Store:
     """The database in `folder` (default: the data folder). Every method swallows storage trouble
     into `warnings` and returns what a fresh, empty store would."""
@@ -95,7 +111,8 @@ class Store:
             if row is None:
                 db.execute("INSERT INTO meta VALUES ('schema', ?)", (str(SCHEMA_VERSION),))
             elif row[0] != str(SCHEMA_VERSION):
-                raise sqlite3.DatabaseError(f"schema version {row[0]}, this game reads {SCHEMA_VERSION}")
+                raise OtherSchema(f"{self.path} is written in schema version {row[0]}, this game reads "
+                                  f"{SCHEMA_VERSION}: left as it is")
         except BaseException:
             db.close()
             raise
@@ -127,6 +144,9 @@ class Store:
             except sqlite3.OperationalError as exc:  # locked, unwritable folder or file
                 self.warn(f"cannot {what}: {self.path}: {exc}")
                 return default
+            except OtherSchema as exc:  # another version's: not damaged, and not this game's to change
+                self.warn(f"cannot {what}: {exc}")
+                return default
             except sqlite3.DatabaseError as exc:  # not a database, or a damaged one
                 damage = exc
             except OSError as exc:
@@ -137,7 +157,7 @@ class Store:
                     result = work(db)
                     db.execute("COMMIT")
                     return result
-                except sqlite3.OperationalError as exc:
+                except (sqlite3.OperationalError, sqlite3.IntegrityError) as exc:  # (a constraint refused it)
                     self.warn(f"cannot {what}: {self.path}: {exc}")
                     return default
                 except sqlite3.DatabaseError as exc:
@@ -166,7 +186,7 @@ class Store:
             for key, value in db.execute("SELECT key, value FROM settings"):
                 try:
                     out[key] = json.loads(value)
-                except json.JSONDecodeError:
+                except (ValueError, TypeError, RecursionError):  # not JSON, not text, nested too deep
                     continue  # one unreadable setting falls back to its default
             return out
 
@@ -220,8 +240,8 @@ class Store:
             holes = db.execute(
                 "SELECT r.course, h.hole, h.position, h.name, r.shape, h.strokes, h.par, c.name, r.finished_at "
                 "FROM holes h JOIN rounds r ON r.id = h.round_id JOIN cards c ON c.round_id = h.round_id "
-                f"AND c.seat = h.seat WHERE 1 = 1{cond} ORDER BY r.course, h.position, r.shape, h.strokes, "
-                "r.finished_at, h.seat", args).fetchall()
+                f"AND c.seat = h.seat WHERE {_typed(HOLE_TYPES)}{cond} ORDER BY r.course, h.position, r.shape, "
+                "h.strokes, r.finished_at, h.seat", args).fetchall()
             seen = set()
             for row in holes:
                 key = (row[0], row[1], row[4])
@@ -230,7 +250,7 @@ class Store:
                     out.append(Best(row[0], row[1], row[2], row[3], row[4], row[5], row[6], row[7], row[8]))
             rounds = db.execute(
                 "SELECT r.course, r.course_name, r.shape, c.strokes, c.par, c.name, r.finished_at FROM cards c "
-                f"JOIN rounds r ON r.id = c.round_id WHERE r.complete = 1{cond} "
+                f"JOIN rounds r ON r.id = c.round_id WHERE r.complete = 1 AND {_typed(ROUND_TYPES)}{cond} "
                 "ORDER BY r.course, r.shape, c.strokes, r.finished_at, c.seat", args).fetchall()
             seen = set()
             for row in rounds:

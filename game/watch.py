@@ -25,8 +25,16 @@ class FileWatcher:
 
     def _run(self, folders: list[str]) -> None:
         for _ in watchfiles.watch(*folders, stop_event=self._stop, debounce=150, recursive=False,
-                                  watch_filter=lambda _change, path: Path(path).resolve() in self.paths):
+                                  watch_filter=lambda _change, path: self._watched(path)):
             self._changed.set()
+
+    def _watched(self, path: str) -> bool:
+        """Whether a change is to a watched file (another file in the folder that cannot be resolved, a
+        link to itself say, is not one, and must not end the watching)."""
+        try:
+            return Path(path).resolve() in self.paths
+        except (OSError, RuntimeError):
+            return False
 
     def changed(self) -> bool:
         """True once after each batch of changes."""

@@ -301,6 +301,27 @@ def test_a_stopped_build_goes_on_from_the_holes_written(library):
     assert asked == [3, 4, 5, 6, 7, 8, 9] and len(course.playable) == 9
 
 
+def test_a_hole_broken_since_it_was_built_is_built_again_and_a_bad_manifest_is_no_course(library,
+                                                                                      isolated_user_data):
+    prove = instant_proof()
+    nine.build_nine(21, library=library, prove=prove)
+    folder = isolated_user_data / "generated" / "nine-21"
+    (folder / "hole-4.yaml").write_text("name: [broken\n")
+    assert nine.load_nine(21, library) is None
+    calls = len(prove.calls)
+    course = nine.build_nine(21, library=library, prove=prove)
+    assert len(course.playable) == 9 and len(prove.calls) > calls  # hole 4 made again, not an error
+    (folder / "nine.json").write_text("[" * 100_000)  # nested past the parser's limit: not a manifest
+    assert nine.load_nine(21, library) is None
+
+
+def test_a_random_nine_that_cannot_be_written_is_one_line(isolated_user_data, capsys):
+    (isolated_user_data / "generated").write_text("a file where the folder goes")
+    assert main(["autoplay", "--course", "random-nine", "--seed", "6", "--preset", "fast"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err[-1].startswith("polygolf: cannot write Random nine to ") and "nine-6" in err[-1]
+
+
 def test_another_generator_version_builds_the_course_again(library, monkeypatch):
     prove = instant_proof()
     nine.build_nine(9, library=library, prove=prove)

@@ -384,6 +384,49 @@ def test_player_content_is_added_to_the_shipped_content(content_copy, tmp_path):
     assert main(["validate"]) == 0
 
 
+def test_a_course_may_not_take_another_courses_id(content_copy, capsys):
+    """A course's id names its bests and replays: the player's own content may not reuse the shipped
+    content's, one file may not name two courses alike, and none may be Random nine."""
+    from polygolf.engine.loading.paths import user_content_dir
+
+    mine = user_content_dir() / "holes"
+    mine.mkdir(parents=True)
+    (mine / "my-hole.yaml").write_text("name: Mine\npar: 2\ntiles:\n  - {at: [0, 0]}\n  - {at: [1, 0]}\n")
+    for courses, line, taken in (("Meadow", 2, "another content folder"), ("Random Nine", 2, "Random nine"),
+                                 ("Mine\n    holes: [my-hole]\n  - name: mine", 4, "courses[0] 'Mine'")):
+        (mine / "courses.yaml").write_text(f"courses:\n  - name: {courses}\n    holes: [my-hole]\n")
+        assert main(["validate", str(mine / "courses.yaml")]) == 1
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and err[0].startswith(f"{mine / 'courses.yaml'}:{line}: courses[") and taken in err[0]
+    (mine / "courses.yaml").write_text("courses:\n  - name: My Course\n    holes: [my-hole]\n")
+    assert main(["validate"]) == 0
+
+
+def test_a_link_to_itself_beside_a_watched_hole_does_not_end_the_watching(tmp_path):
+    from polygolf.game.watch import FileWatcher
+
+    hole = tmp_path / "hole.yaml"
+    hole.write_text("name: first\n")
+    watcher = FileWatcher(hole)
+    try:
+        time.sleep(0.3)  # the watcher's thread is listening
+        (tmp_path / "loop.yaml").symlink_to("loop.yaml")  # resolving it raises
+        time.sleep(0.5)
+        hole.write_text("name: second\n")
+        deadline = time.monotonic() + 10.0
+        while not watcher.changed() and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert time.monotonic() < deadline, "the save after the loop was not seen"
+    finally:
+        watcher.close()
+
+
+def test_explain_takes_a_hole_file_from_any_folder(tmp_path, capsys):
+    shutil.copy(HOLES_DIR / "straight.yaml", tmp_path / "straight.yaml")  # no tiles.yaml beside it
+    assert main(["explain", str(tmp_path / "straight.yaml")]) == 0
+    assert capsys.readouterr().out.startswith("Straight (straight) at balanced")
+
+
 def test_a_file_of_many_large_outlines_is_refused_before_any_is_cut_up(tmp_path, capsys):
     wall = "  - polygon: [" + ", ".join(f"[{math.cos(a / 64 * 6.283) * 5:.4f}, {math.sin(a / 64 * 6.283) * 5:.4f}]"
                                        for a in range(64)) + "]\n"

@@ -302,6 +302,62 @@ def test_a_locked_database_costs_a_warning(capsys):
     assert store.load_settings() == {"volume": 0.5}
 
 
+def test_settings_of_the_wrong_type_or_too_deep_fall_back_to_their_defaults():
+    """A settings row edited by hand (a list where a name was, JSON nested past the parser's limit)
+    is one setting lost, never a game that cannot start."""
+    store = Store(echo=False)
+    assert store.save_settings({"volume": 0.5})
+    with sqlite3.connect(store.path) as db:
+        db.executemany("INSERT OR REPLACE INTO settings VALUES (?, ?)",
+                       [("hint", "[]"), ("computer_skill", '{"a": 1}'), ("theme", "[1]"), ("course", "{}"),
+                        ("players", '["A\u0007B"]'), ("preview", "[" * 100_000), ("guide_seen", b"\x00\xff")])
+    game = Game.load()
+    assert (game.hint, game.computer_skill, game.preview, game.sound.volume) == ("off", "good", True, 0.5)
+    assert game.players == ["Player 1"]  # a control character in a saved name: not taken
+
+
+def test_rows_of_the_wrong_type_are_passed_over_by_the_bests(capsys):
+    assert autoplay() == 0
+    capsys.readouterr()
+    with sqlite3.connect(data_dir() / "polygolf.db") as db:
+        db.execute("UPDATE holes SET position = 'abc' WHERE position = 0")
+        db.execute("UPDATE cards SET par = 'x'")
+    assert main(["scores", "--json"]) == 0
+    bests = json.loads(capsys.readouterr().out)
+    assert [b["number"] for b in bests] == [2, 3]  # hole 1's row, and the course's (its par), left out
+    with sqlite3.connect(data_dir() / "polygolf.db") as db:
+        db.execute("UPDATE rounds SET finished_at = x'00ff'")
+    assert main(["scores"]) == 0 and capsys.readouterr().out.strip() == "no rounds saved yet"
+
+
+def test_a_refused_write_or_another_versions_database_is_never_set_aside(capsys):
+    """Only a file SQLite cannot read is damaged: a constraint that refuses a row, or a database of
+    another schema version, costs one warning and the file stays as it is."""
+    assert autoplay() == 0
+    db = data_dir() / "polygolf.db"
+    with sqlite3.connect(db) as conn:
+        conn.execute("CREATE TRIGGER refuse BEFORE INSERT ON cards BEGIN SELECT RAISE(ABORT, 'refused'); END")
+    capsys.readouterr()
+    assert autoplay() == 0
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "cannot" in err[0] and "refused" in err[0]
+    assert Store(echo=False).round_count() == 1 and not list(data_dir().glob("polygolf.db.corrupt-*"))
+    with sqlite3.connect(db) as conn:
+        conn.execute("UPDATE meta SET value = '2' WHERE key = 'schema'")
+    store = Store(echo=False)
+    assert store.bests() == [] and "schema version 2" in store.warnings[0]
+    assert not list(data_dir().glob("polygolf.db.corrupt-*"))
+    with sqlite3.connect(db) as conn:  # untouched: the newer game finds its rounds
+        assert conn.execute("SELECT COUNT(*) FROM rounds").fetchone()[0] == 1
+
+
+@pytest.mark.parametrize("names", ["J\udcf6rg", "A\x07\x1b[31mRED"])
+def test_names_that_are_not_printable_text_are_refused_in_one_line(names, capsys):
+    assert autoplay("--names", names) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "printable" in err[-1]
+
+
 def test_preset_switches_are_recorded_and_the_round_replays_exactly(courses):
     course = find_course(courses, "sandbox")
     session = RoundPlay(Round(course, players=["Ann", "Bob"]), PENTAGON, "Pentagon", "balanced")
@@ -327,7 +383,7 @@ def test_preset_switches_are_recorded_and_the_round_replays_exactly(courses):
     record = session.record
     assert [h.preset for h in record.holes] == ["balanced", "accurate", "accurate"]
     assert [i.preset for i in record.holes[0].inputs if i.kind == "preset"] == ["fast"]
-    lines = verify(record, course)
+    lines = list(verify(record, course))
     assert len(lines) == 3 and all(same for _, same in lines), lines
 
 

@@ -4,6 +4,7 @@ checked (reachable cup, clear tee and cup), and courses of such holes with broke
 from __future__ import annotations
 
 import math
+from collections.abc import Collection
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -13,6 +14,8 @@ from polygolf.engine.loading.paths import HOLES_DIR, content_roots
 from polygolf.engine.loading.yamlsource import ContentError, format_loc, line_of, load_yaml, validate
 from polygolf.engine.physics.polygon import bounding_radius
 from polygolf.engine.physics.settings import LINEAR_SLOP
+
+RANDOM_NINE_ID = "random-nine"  # the course the game builds from a seed (`golf.nine`): no content's
 
 
 @dataclass(slots=True)
@@ -99,17 +102,27 @@ def load_hole_file(path: str | Path) -> Hole:
     return load_hole(path, library_beside(Path(path)))
 
 
-def load_courses(path: str | Path | None = None, library: TileLibrary | None = None) -> list[Course]:
+def load_courses(path: str | Path | None = None, library: TileLibrary | None = None,
+                 taken: Collection[str] = ()) -> list[Course]:
     """Every course of a courses file with its holes. A broken hole is kept as its ContentError so
     the rest of the course plays; an unknown hole name is such an error too. Holes are files beside
-    the courses file; the library is the one beside it too, else the shipped one."""
+    the courses file; the library is the one beside it too, else the shipped one. A course's id (its
+    name in lower case, spaces as dashes) names its bests and replays, so it may not repeat one in
+    the file, one of `taken` (other content folders') or Random nine's."""
     path = Path(path or HOLES_DIR / "courses.yaml")
     library = library or library_beside(path)
     data, lines = load_yaml(path)
     spec = validate(CoursesFile, data, lines, path)
     courses = []
+    seen = {RANDOM_NINE_ID: "Random nine", **{taken_id: "a course of another content folder" for taken_id in taken}}
     for c, course in enumerate(spec.courses):
         loaded = Course(id=course.name.lower().replace(" ", "-"), name=course.name)
+        if loaded.id in seen:
+            loc = ("courses", c, "name")
+            raise ContentError(path, line_of(loc, lines), format_loc(loc),
+                               f"course id {loaded.id!r} (from its name) is taken by {seen[loaded.id]}: give the "
+                               "course another name")
+        seen[loaded.id] = f"courses[{c}] {course.name!r}"
         for h, hole_id in enumerate(course.holes):
             hole_path = path.parent / f"{hole_id}.yaml"
             if not hole_path.exists():
@@ -134,7 +147,7 @@ def load_all_courses() -> tuple[list[Course], list[ContentError]]:
         path = root / "holes" / "courses.yaml"
         if path.exists():
             try:
-                courses += load_courses(path)
+                courses += load_courses(path, taken=[c.id for c in courses])
             except ContentError as exc:
                 problems.append(exc)
     return courses, problems

@@ -23,7 +23,7 @@ from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from pathlib import Path
 
 from polygolf.engine.golf.generate import Prove, generate, golfer_proof, schema_ref
-from polygolf.engine.golf.holes import Course, load_courses
+from polygolf.engine.golf.holes import RANDOM_NINE_ID, Course, load_courses, load_hole
 from polygolf.engine.loading.course import TileLibrary, load_library
 from polygolf.engine.loading.paths import data_dir
 from polygolf.engine.loading.yamlsource import ContentError
@@ -32,7 +32,7 @@ GENERATOR_VERSION = 1  # bump when the same seed would draw other holes
 NINE = 9
 NINE_KNOBS = "fast"  # the preset the holes are proven at (play is at any preset)
 NINE_EFFORT = "quick"
-COURSE_ID = "random-nine"  # the choice's name on the command line and in the settings
+COURSE_ID = RANDOM_NINE_ID  # the choice's name on the command line and in the settings
 SEED_RANGE = (1, 99_999)  # new seeds are short enough to read out to a friend
 
 
@@ -69,7 +69,7 @@ def _manifest(seed: int, library: TileLibrary) -> dict:
 def _read_manifest(folder: Path) -> dict | None:
     try:
         data = json.loads((folder / "nine.json").read_text(encoding="utf-8"))
-    except (OSError, ValueError):
+    except (OSError, ValueError, RecursionError):  # missing, not JSON, nested too deep
         return None
     return data if isinstance(data, dict) and isinstance(data.get("holes"), dict) else None
 
@@ -81,8 +81,21 @@ def _same_build(found: dict | None, wanted: dict) -> bool:
 def _write(path: Path, text: str) -> None:
     """Whole or not at all: a build stopped mid-write leaves no half file."""
     part = path.with_name(path.name + ".part")
-    part.write_text(text, encoding="utf-8")
-    os.replace(part, path)
+    try:
+        part.write_text(text, encoding="utf-8")
+        os.replace(part, path)
+    except OSError:
+        part.unlink(missing_ok=True)  # (a full disk: nothing half written is left behind)
+        raise
+
+
+def _loads(path: Path, library: TileLibrary) -> bool:
+    """Whether a hole built before is there and loads (one broken since is built again)."""
+    try:
+        load_hole(path, library)
+    except (ContentError, OSError, ValueError):
+        return False
+    return True
 
 
 def load_nine(seed: int, library: TileLibrary | None = None) -> Course | None:
@@ -177,7 +190,8 @@ def build_nine(seed: int, *, library: TileLibrary | None = None, prove: Prove | 
     if not _same_build(manifest, wanted):
         manifest = wanted
     schema = schema_ref(folder)
-    todo = [k for k in range(1, NINE + 1) if not (str(k) in manifest["holes"] and (folder / f"hole-{k}.yaml").exists())]
+    todo = [k for k in range(1, NINE + 1) if not (str(k) in manifest["holes"] and _loads(folder / f"hole-{k}.yaml",
+                                                                                          library))]
     done = NINE - len(todo)
     workers = min(len(todo), workers or (1 if prove is not None else os.cpu_count() or 1))
     if todo and progress is not None:

@@ -10,7 +10,7 @@ from pathlib import Path
 
 from polygolf.engine.assembly.simulation import Simulation
 from polygolf.engine.assembly.stages import STAGES
-from polygolf.engine.golf.holes import Hole, find_course, load_courses, load_hole
+from polygolf.engine.golf.holes import Hole, find_course, load_courses, load_hole, load_hole_file
 from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.golf.scenes import build_scene_file
 from polygolf.engine.golf.world import DEFAULT_BALL
@@ -42,14 +42,14 @@ def _hole(target: str) -> Hole:
     """A hole file, COURSE:HOLE (number or id), or a hole id in the shipped content."""
     path = Path(target)
     if path.suffix in (".yaml", ".yml"):
-        return load_hole(path, load_library(path.parent / "tiles.yaml"))
+        return load_hole_file(path)  # (with the tiles.yaml beside it, else the shipped library)
     if ":" in target:
         course_name, which = target.split(":", 1)
         holes = find_course(load_courses(), course_name).holes
-        entry = holes[int(which) - 1] if which.isdigit() and 1 <= int(which) <= len(holes) else next(
+        entry = holes[int(which) - 1] if which.isdigit() and len(which) < 5 and 1 <= int(which) <= len(holes) else next(
             (h for h in holes if getattr(h, "id", None) == which), None)
         if entry is None:
-            raise KeyError(f"{course_name} has no hole {which!r}")
+            raise KeyError(f"{course_name} has no hole {which[:24]!r}{'…' if len(which) > 24 else ''}")
         if isinstance(entry, ContentError):
             raise entry
         return entry

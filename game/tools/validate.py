@@ -21,7 +21,8 @@ def check_file(path: Path) -> list[ContentError]:
         if kind == "library":
             load_library(path)
         elif kind == "courses":
-            return [p for c in load_courses(path) for h in c.holes if isinstance(h, ContentError) for p in h.problems]
+            return [p for c in load_courses(path, taken=_taken_before(path)) for h in c.holes
+                    if isinstance(h, ContentError) for p in h.problems]
         elif kind == "hole":
             load_hole_file(path)
         elif kind == "scene":
@@ -34,6 +35,20 @@ def check_file(path: Path) -> list[ContentError]:
     except ContentError as exc:
         return exc.problems
     return []
+
+
+def _taken_before(path: Path) -> list[str]:
+    """The course ids of the content folders the game loads before this courses file's (the shipped
+    content's, for the player's own): the file may not name a course as one of them."""
+    files = [root / "holes" / "courses.yaml" for root in content_roots()]
+    mine = next((k for k, file in enumerate(files) if file.resolve() == path.resolve()), len(files))
+    taken: list[str] = []
+    for file in files[:mine]:
+        try:
+            taken += [c.id for c in load_courses(file, taken=taken)] if file.exists() else []
+        except ContentError:
+            continue  # (its own problems are its own)
+    return taken
 
 
 _KEYS = {"border_sets": "library", "courses": "courses", "tiles": "hole", "bodies": "scene", "background": "theme"}

@@ -257,6 +257,7 @@ def _menu(args: argparse.Namespace) -> int:
 
 
 def _play(args: argparse.Namespace) -> int:
+    from polygolf.engine.golf.nine import NINE
     from polygolf.game.app import run_hole_file, run_play
 
     if args.file is not None:
@@ -266,6 +267,9 @@ def _play(args: argparse.Namespace) -> int:
         return EXIT_CONTENT
     if args.seed is not None and args.course != "random-nine":
         print("polygolf: --seed is for --course random-nine", file=sys.stderr)
+        return EXIT_CONTENT
+    if args.course == "random-nine" and args.hole is not None and args.hole > NINE:  # before minutes of building
+        print(f"polygolf: random-nine has holes 1 to {NINE}", file=sys.stderr)
         return EXIT_CONTENT
     return _window(run_play, args.course, args.hole, args.theme, args.shape, args.preset,
                    player_names(args.players, args.names), args.seed)
@@ -284,6 +288,10 @@ def _generate(args: argparse.Namespace) -> int:
         out.parent.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         print(f"polygolf: --out: cannot make the folder {out.parent}: {exc.strerror}", file=sys.stderr)
+        return EXIT_CONTENT
+    if out.is_dir() or not os.access(out.parent, os.W_OK):  # said now, not after the proof's minutes
+        print(f"polygolf: --out: cannot write {out}: {'a folder' if out.is_dir() else 'its folder is read-only'}",
+              file=sys.stderr)
         return EXIT_CONTENT
     library = library_beside(out)  # the library `validate` and `play` will read it with
     startup.prepare_physics()
@@ -410,6 +418,7 @@ def _replay(args: argparse.Namespace) -> int:
 
 
 def _render(args: argparse.Namespace) -> int:
+    from polygolf.engine.golf.nine import NINE
     from polygolf.game.app import WINDOW_SIZE, render_hole
 
     try:
@@ -420,6 +429,8 @@ def _render(args: argparse.Namespace) -> int:
     try:
         if args.seed is not None and args.course != "random-nine":
             raise ValueError("--seed is for random-nine")
+        if args.course == "random-nine" and args.hole > NINE:  # said before minutes of building
+            raise ValueError(f"random-nine has holes 1 to {NINE}")
         out = _window(render_hole, args.course, args.hole, args.theme, args.shape, args.out, WINDOW_SIZE, args.seed)
     except OSError as exc:
         print(f"polygolf: --out: cannot write {args.out}: {exc.strerror or exc}", file=sys.stderr)

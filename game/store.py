@@ -71,6 +71,14 @@ ROUND_TYPES = {"r.course": "text", "r.course_name": "text", "r.shape": "text", "
                "c.par": "integer", "c.name": "text", "r.finished_at": "text"}
 
 
+def _not_a_folder(folder: Path) -> str | None:
+    """'X is a file, not a folder' when the data folder or one above it is a file (else None)."""
+    for place in (folder, *folder.parents):
+        if place.exists():
+            return None if place.is_dir() else f"{place} is a file, not a folder"
+    return None
+
+
 def _typed(columns: dict[str, str]) -> str:
     return " AND ".join(f"typeof({column}) = '{kind}'" for column, kind in columns.items())
 
@@ -150,7 +158,7 @@ class Store:
             except sqlite3.DatabaseError as exc:  # not a database, or a damaged one
                 damage = exc
             except OSError as exc:
-                self.warn(f"cannot {what}: {self.folder}: {exc.strerror or exc}")
+                self.warn(f"cannot {what}: {self.folder}: {_not_a_folder(self.folder) or exc.strerror or exc}")
                 return default
             if damage is None:
                 try:

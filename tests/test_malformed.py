@@ -421,6 +421,31 @@ def test_a_link_to_itself_beside_a_watched_hole_does_not_end_the_watching(tmp_pa
         watcher.close()
 
 
+@pytest.mark.parametrize("hole", ["../../../etc/passwd", "/etc/hostname.yaml", "sub/hole.yaml", ".hidden.yaml"])
+def test_a_scenes_hole_is_a_file_beside_it_or_a_course_hole(tmp_path, hole, capsys):
+    path = tmp_path / "scene.yaml"
+    path.write_text(f"hole: {hole}\n" + SCENE)
+    assert main(["simulate", str(path), "--seconds", "0.1", "--json"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and LINE.match(err[0].removeprefix("polygolf: ")) and "is not a hole file beside" in err[0]
+    assert "root:" not in err[0]
+
+
+@pytest.mark.parametrize("args", [["render", "random-nine", "10", "--seed", "5", "--out", "x.png"],
+                                  ["play", "--course", "random-nine", "--hole", "12", "--seed", "3"],
+                                  ["generate", "--seed", "1", "--out", "."]])
+def test_what_cannot_be_done_is_said_before_minutes_of_building(args, tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "dir.yaml").mkdir()
+    args = [a if a != "." else str(tmp_path / "dir.yaml") for a in args]
+    started = time.perf_counter()
+    assert main(args) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err[-1] in ("polygolf: random-nine has holes 1 to 9", f"polygolf: --out: cannot write {args[-1]}: a folder")
+    assert time.perf_counter() - started < 20.0  # a bound against building first, not a speed measurement
+    assert not (tmp_path / "generated").exists()
+
+
 def test_explain_takes_a_hole_file_from_any_folder(tmp_path, capsys):
     shutil.copy(HOLES_DIR / "straight.yaml", tmp_path / "straight.yaml")  # no tiles.yaml beside it
     assert main(["explain", str(tmp_path / "straight.yaml")]) == 0

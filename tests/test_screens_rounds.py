@@ -249,3 +249,16 @@ def test_players_type_their_names_and_the_game_keeps_them(window, shots_dir):  #
     assert isinstance(window.current_view, MenuView)
     assert window.current_view.buttons["names"].text == "Names: Ann, Ann 2"
     assert Game.load().players == ["Ann", "Ann 2"]  # kept for the next launch
+
+
+def test_repeated_long_names_are_numbered_within_the_length():
+    """Two players typing the same 20-character name (the longest) are still told apart."""
+    from types import SimpleNamespace
+
+    from polygolf.game.views.names import NamesView
+
+    long = "Alexandra Worthingto"
+    boxes = [SimpleNamespace(text=text) for text in (long, long, f"{long[:18]} 2", long)]
+    names = NamesView.names(SimpleNamespace(boxes=boxes))
+    assert len(set(names)) == 4 and all(len(name) <= 20 for name in names)
+    assert names[:3] == [long, f"{long[:18]} 2", f"{long[:18]} 3"]

@@ -29,8 +29,10 @@ def find_hole(name: str, beside: Path) -> Hole:
         if isinstance(hole, ContentError):
             raise hole
         return hole
+    if Path(name).name != name or name.startswith(".") or "\\" in name or not name.endswith((".yaml", ".yml")):
+        raise KeyError(f"{name!r} is not a hole file beside the scene (its name, ending .yaml), nor COURSE:N")
     path = beside / name
-    if not path.exists():
+    if not path.is_file():
         raise KeyError(f"no hole file {path}")
     return load_hole_file(path)
 

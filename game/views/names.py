@@ -62,7 +62,11 @@ class NamesView(UIView):
         out: list[str] = []
         for seat, box in enumerate(self.boxes):
             name = " ".join(box.text.split())[:MAX_NAME] or f"Player {seat + 1}"
-            out.append(name if name not in out else f"{name} {seat + 1}"[:MAX_NAME])
+            number, base = seat + 1, name
+            while name in out:  # a repeat: numbered, cut to leave the number room (never the same again)
+                suffix = f" {number}"
+                name, number = base[:MAX_NAME - len(suffix)].rstrip() + suffix, number + 1
+            out.append(name)
         return out
 
     @staticmethod

@@ -262,3 +262,53 @@ def test_repeated_long_names_are_numbered_within_the_length():
     names = NamesView.names(SimpleNamespace(boxes=boxes))
     assert len(set(names)) == 4 and all(len(name) <= 20 for name in names)
     assert names[:3] == [long, f"{long[:18]} 2", f"{long[:18]} 3"]
+
+
+LONG_NAMES = ["Alexandra Worthingto", "Bob", "CPU", "Christopher Robinson"]
+
+
+def _extent(text: arcade.Text) -> tuple[float, float]:
+    """A text's left and right edges on the screen."""
+    left = text.x - {"left": 0.0, "center": 0.5, "right": 1.0}[text.anchor_x] * text.content_width
+    return left, left + text.content_width
+
+
+@pytest.mark.parametrize("size", [(640, 400), (800, 600), (1280, 720)])
+def test_screens_keep_long_names_and_scores_inside_their_places(window, size, shots_dir):  # noqa: F811
+    """Four players with the longest names, picked up on every hole: no scorecard cell runs out of
+    its column, no HUD text into another, no between-holes line off the window."""
+    from polygolf.engine.golf.holes import find_course
+    from polygolf.game.session import Round
+
+    window.set_size(*size)
+    window.dispatch_events()
+    game = Game.load()
+    course = find_course(game.courses, "meadow")
+    round_ = Round(course, players=list(LONG_NAMES))
+    for _ in range(9):
+        results = round_.finish_hole([(10, True, 3), (5, False, 1), (2, False, 0), (7, False, 2)])
+    between = BetweenView(game, round_, results, ScreenFlow(window, game))
+    window.show_view(between)
+    between.on_draw()
+    for text in (between.headline, between.detail, between.lines, between.best, between.next_text):
+        left, right = _extent(text)
+        assert 0 <= left and right <= size[0], text.text
+    assert between.next_text.y - between.next_text.content_height / 2 > 108  # above the button
+    results_view = ResultsView(game, round_, ScreenFlow(window, game))
+    window.show_view(results_view)
+    results_view.on_draw()
+    label_w, cell_w, _, _, _ = results_view._fit(*size)
+    for cell in results_view.cells:
+        room = label_w - 10 if cell.col == 0 else cell_w
+        assert cell.text.content_width <= room, (cell.text.text, cell.text.content_width, room)
+    assert_not_blank(snapshot(window, shots_dir, f"results-long-names-{size[0]}"), "results")
+    game.players = list(LONG_NAMES)
+    play = PlayView(game, game.start_round(1), ScreenFlow(window, game))
+    window.show_view(play)
+    play.on_draw()
+    course_text, hole_text, strokes_text = (play.hud_texts[k] for k in ("course", "hole", "strokes"))
+    edges = [_extent(course_text), _extent(hole_text), _extent(strokes_text)]
+    assert 0 <= edges[0][0] and edges[0][1] < edges[1][0] and edges[1][1] < edges[2][0] and edges[2][1] <= size[0]
+    assert _extent(play.hud_texts["players"])[0] >= 0
+    window.set_size(1280, 720)
+    window.dispatch_events()

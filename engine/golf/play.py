@@ -165,7 +165,7 @@ class HolePlay:
         """The player's tee spot, or if another ball lies on it now, the nearest spot where a ball fits
         that no ball covers (a restart never drops a ball onto another)."""
         others = [(p.body.x, p.body.y, p.collider.radius + player.collider.radius + LINEAR_SLOP)
-                  for p in self.players if p is not player and not p.state.holed]
+                  for p in self.players if p is not player and not p.state.finished]  # (a finished one left)
         spot = free_spot(player.tee, drop_spots(self.layout, self.hole.library.ball.radius), others)
         return spot if spot is not None else player.tee
 

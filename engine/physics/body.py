@@ -10,6 +10,7 @@ into one array, row for row, and points each handle at its new row.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -19,9 +20,9 @@ import numpy as np
 # order: pose, velocity, mass properties, split-impulse pseudo-velocity.
 COLUMNS = ("x", "y", "angle", "vx", "vy", "spin", "mass", "inertia", "inv_mass", "inv_inertia",
            "push_x", "push_y", "push_spin", "asleep", "still_time", "x0", "y0", "angle0", "lag", "moved_for",
-           "drag_scale")
+           "drag_scale", "energy0")
 (X, Y, ANGLE, VX, VY, SPIN, MASS, INERTIA, INV_MASS, INV_INERTIA, PUSH_X, PUSH_Y, PUSH_SPIN, ASLEEP, STILL_TIME,
- X0, Y0, ANGLE0, LAG, MOVED_FOR, DRAG_SCALE) = range(len(COLUMNS))
+ X0, Y0, ANGLE0, LAG, MOVED_FOR, DRAG_SCALE, ENERGY0) = range(len(COLUMNS))
 SOLVER_COLUMNS = PUSH_SPIN + 1
 
 
@@ -66,6 +67,8 @@ class BodyScratch(_Row):
     push_y = _column(PUSH_Y, "split-impulse pseudo-velocity, y")
     push_spin = _column(PUSH_SPIN, "split-impulse pseudo-velocity, angular")
     drag_scale = _column(DRAG_SCALE, "the surface under the body (sand, ice) scales its drag this substep by this")
+    energy0 = _column(ENERGY0, "kinetic energy before this substep's contact solve (J): restitution may not exceed it "
+                               "(inf until a solve says: no cap)")
 
 
 class Body(_Row):
@@ -89,7 +92,7 @@ class Body(_Row):
         # One conversion of a list (a search makes a thousand bodies at once): the columns in order,
         # the substep's start pose = the pose, drag scale 1.
         self._point(np.array([x, y, angle, vx, vy, spin, mass, inertia, inv_mass, inv_inertia, 0.0, 0.0, 0.0,
-                              1.0 if asleep else 0.0, 0.0, x, y, angle, 0.0, 0.0, 1.0], dtype=np.float64))
+                              1.0 if asleep else 0.0, 0.0, x, y, angle, 0.0, 0.0, 1.0, math.inf], dtype=np.float64))
 
     def _point(self, row: np.ndarray) -> None:
         """Make this handle read and write `row`."""

@@ -72,6 +72,7 @@ from polygolf.engine.physics.settings import BLOCK_MAX_CONDITION, LINEAR_SLOP, M
 B_X, B_Y, B_ANGLE, B_VX, B_VY, B_SPIN, B_MASS, B_INERTIA, B_INV_MASS, B_INV_INERTIA, B_PUSH_X, B_PUSH_Y, \
     B_PUSH_SPIN = body.X, body.Y, body.ANGLE, body.VX, body.VY, body.SPIN, body.MASS, body.INERTIA, body.INV_MASS, \
     body.INV_INERTIA, body.PUSH_X, body.PUSH_Y, body.PUSH_SPIN
+B_ENERGY0 = body.ENERGY0  # (past the solver's columns: a store row's, read by the bounce's cap)
 # Position correction, as `solve_contacts` takes it.
 SPLIT, NGS, NO_CORRECTION = 0, 1, 2
 _CORRECTIONS = {"split": SPLIT, "ngs": NGS, "none": NO_CORRECTION}
@@ -651,6 +652,8 @@ def solve_table(state: np.ndarray, static: np.ndarray, table: tuple, warm: bool,
         source = state[named[j]] if named[j] < n else static
         for c in range(body.SOLVER_COLUMNS):
             bodies[j, c] = source[c]
+        if named[j] < n:
+            state[named[j], B_ENERGY0] = _kinetic_energy(state, named[j])  # (what restitution may not exceed)
     cold_restarts = solve_contacts(bodies, normals, local, first, block, points, warm, iterations,
                                    position_iterations, correction, dt, friction, POSITION_BETA, LINEAR_SLOP,
                                    MAX_CORRECTION, BLOCK_MAX_CONDITION)
@@ -673,15 +676,18 @@ def _body_row(state: np.ndarray, static: np.ndarray, k: int) -> np.ndarray:
 def restitute(state: np.ndarray, static: np.ndarray, table: tuple, threshold: float) -> int:
     """`apply_restitution` on a table's columns (`ContactTable.arrays`) and its bodies' rows, in place."""
     _, pair, normals, _, first, points, _ = table
+    scale = _bounce_scale(state, pair, normals, first, points, threshold)
+    if scale is None:
+        return 0
     bounced = 0
     for k in range(pair.shape[0]):
         nx, ny = normals[k, M_NX], normals[k, M_NY]
         a, b = _body_row(state, static, pair[k, 0]), _body_row(state, static, pair[k, 1])
+        s = scale[pair[k, 0]] if pair[k, 0] < state.shape[0] else scale[pair[k, 1]]
         for p in range(first[k], first[k + 1]):
-            if points[p, P_APPROACH] >= -threshold or points[p, P_NORMAL_IMPULSE] <= 0.0 \
-                    or points[p, P_RESTITUTION] <= 0.0:
+            if not _bounces(points, p, threshold):
                 continue
-            e = points[p, P_RESTITUTION]
+            e = points[p, P_RESTITUTION] * s
             jn, jt = e * points[p, P_NORMAL_IMPULSE], e * points[p, P_TANGENT_IMPULSE]
             px, py = jn * nx + jt * ny, jn * ny - jt * nx
             a[B_VX] -= a[B_INV_MASS] * px
@@ -694,6 +700,110 @@ def restitute(state: np.ndarray, static: np.ndarray, table: tuple, threshold: fl
             points[p, P_NORMAL_IMPULSE] = points[p, P_TANGENT_IMPULSE] = 0.0
             bounced += 1
     return bounced
+
+
+@leaf_kernel
+def _bounces(points: np.ndarray, p: int, threshold: float) -> bool:
+    """Whether point p bounces: it was approaching faster than `threshold` and took an impulse."""
+    return points[p, P_APPROACH] < -threshold and points[p, P_NORMAL_IMPULSE] > 0.0 and points[p, P_RESTITUTION] > 0.0
+
+
+@kernel
+def _bounce_scale(state: np.ndarray, pair: np.ndarray, normals: np.ndarray, first: np.ndarray, points: np.ndarray,
+                  threshold: float) -> np.ndarray | None:
+    """What each body's bounce is scaled by (None: no point bounces). Poisson's bounce gives every
+    point e times its compression impulse again, point by point; where points push against each
+    other (a body pinched in a notch or a groove) their large, nearly cancelling impulses given
+    again can leave the bodies with more kinetic energy than before the impact. So in each island
+    (bodies joined by this substep's contacts, which only pass energy between them or take it away)
+    with a bounce, the bounces are scaled back, as little as they must be, until the island has no
+    more kinetic energy than before the substep's contact solve (`B_ENERGY0`): the energy after is
+    quadratic in the scale. An island with a kinematic body (a windmill, which may well add energy)
+    is left as it is. Unscaled, a bounce is the same floats as before this cap."""
+    n = state.shape[0]
+    group = np.arange(n)  # union-find over the body rows (the static world, row n, joins nothing)
+    any_bounce = False
+    for k in range(pair.shape[0]):
+        a, b = pair[k, 0], pair[k, 1]
+        if a < n and b < n:
+            ra, rb = _root(group, a), _root(group, b)
+            group[max(ra, rb)] = min(ra, rb)
+        if not any_bounce:
+            any_bounce = _any_bounce(points, first[k], first[k + 1], threshold)
+    if not any_bounce:
+        return None
+    bouncing = np.zeros(n, dtype=np.bool_)  # by island root
+    change = np.zeros((n, 3))  # each body's velocity change by its bounces
+    for k in range(pair.shape[0]):
+        nx, ny = normals[k, M_NX], normals[k, M_NY]
+        a, b = pair[k, 0], pair[k, 1]
+        for p in range(first[k], first[k + 1]):
+            if not _bounces(points, p, threshold):
+                continue
+            bouncing[_root(group, a if a < n else b)] = True
+            e = points[p, P_RESTITUTION]
+            jn, jt = e * points[p, P_NORMAL_IMPULSE], e * points[p, P_TANGENT_IMPULSE]
+            px, py = jn * nx + jt * ny, jn * ny - jt * nx
+            if a < n:
+                change[a, 0] -= state[a, B_INV_MASS] * px
+                change[a, 1] -= state[a, B_INV_MASS] * py
+                change[a, 2] -= state[a, B_INV_INERTIA] * (points[p, P_RA_X] * py - points[p, P_RA_Y] * px)
+            if b < n:
+                change[b, 0] += state[b, B_INV_MASS] * px
+                change[b, 1] += state[b, B_INV_MASS] * py
+                change[b, 2] += state[b, B_INV_INERTIA] * (points[p, P_RB_X] * py - points[p, P_RB_Y] * px)
+    # Per island: energy(s) = quad s^2 + lin s + now; it may not end above `before`.
+    quad, lin, now, before = np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n)
+    driven = np.zeros(n, dtype=np.bool_)
+    touched = np.zeros(n, dtype=np.bool_)
+    for k in range(pair.shape[0]):
+        for side in range(2):
+            j = pair[k, side]
+            if j >= n or touched[j]:
+                continue
+            touched[j] = True
+            root = _root(group, j)
+            if not bouncing[root]:
+                continue
+            if state[j, B_INV_MASS] == 0.0:
+                driven[root] = True  # a kinematic body
+                continue
+            m, inertia = state[j, B_MASS], state[j, B_INERTIA] if state[j, B_INV_INERTIA] > 0.0 else 0.0
+            vx, vy, w = state[j, B_VX], state[j, B_VY], state[j, B_SPIN]
+            dx, dy, dw = change[j, 0], change[j, 1], change[j, 2]
+            quad[root] += 0.5 * (m * (dx * dx + dy * dy) + inertia * dw * dw)
+            lin[root] += m * (vx * dx + vy * dy) + inertia * w * dw
+            now[root] += 0.5 * (m * (vx * vx + vy * vy) + inertia * w * w)
+            before[root] += state[j, B_ENERGY0]
+    scale = np.ones(n)
+    for j in range(n):
+        if not touched[j]:
+            continue
+        root = _root(group, j)
+        if not bouncing[root] or driven[root] or \
+                quad[root] + lin[root] + now[root] <= before[root] * (1.0 + 1e-9) + 1e-12:
+            continue
+        # The largest s in [0, 1] with quad s^2 + lin s + now <= before (0 if even none is).
+        room = lin[root] * lin[root] - 4.0 * quad[root] * (now[root] - before[root])
+        s = (-lin[root] + math.sqrt(room)) / (2.0 * quad[root]) if room >= 0.0 and quad[root] > 0.0 else 0.0
+        scale[j] = min(1.0, max(0.0, s))
+    return scale
+
+
+@leaf_kernel
+def _any_bounce(points: np.ndarray, start: int, stop: int, threshold: float) -> bool:
+    for p in range(start, stop):
+        if _bounces(points, p, threshold):
+            return True
+    return False
+
+
+@leaf_kernel
+def _root(group: np.ndarray, j: int) -> int:
+    while group[j] != j:
+        group[j] = group[group[j]]
+        j = group[j]
+    return j
 
 
 def apply_restitution(table: ContactTable, threshold: float) -> int:

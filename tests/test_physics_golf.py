@@ -374,6 +374,25 @@ def test_a_body_dropped_8mm_onto_another_rests_touching_it(preset):
         assert -LINEAR_SLOP <= gap <= LINEAR_SLOP, gap
 
 
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_two_boxes_stacked_on_a_floor_rest_where_they_are(preset):
+    """Resting contacts under gravity close by g·dt every substep (0.08 m/s at fast): bounced as
+    impacts, they lifted the pair the whole contact margin (10 mm) off the floor and walked it
+    sideways, never at rest. Equal boxes, restitution 0.2, friction 0.6."""
+    half = 0.5 * math.sqrt(0.5)
+    box = {"shape": {"regular": 4, "radius": 0.5}, "angle": 45.0, "restitution": 0.2, "friction": 0.6}
+    scene = Scene.model_validate({"name": "two-boxes", "gravity": [0.0, -9.81],
+                                  "walls": [{"box": {"center": [0.0, -0.5], "half": [10.0, 0.5]}}],
+                                  "bodies": [{"name": "bottom", "position": [0.0, half], **box},
+                                             {"name": "top", "position": [0.0, 3 * half + 0.001], **box}]})
+    with build_scene(scene, preset) as sim:
+        sim.run(5.0)
+        bottom, top = sim.body("bottom"), sim.body("top")
+        assert bottom.asleep and top.asleep
+        assert abs(bottom.y - half) <= LINEAR_SLOP and abs(top.y - bottom.y - 2 * half) <= LINEAR_SLOP
+        assert abs(bottom.x) < 1e-3 and abs(top.x) < 1e-3
+
+
 def _pinch_world(preset: str):
     """A windmill arm (2.15 m, turning at 1.5 rad/s) whose tip passes 0.49 m from a wall, and a
     hexagon ball 0.78 m across flat against that wall in its path: a gap the content rules refuse."""

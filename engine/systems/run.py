@@ -39,6 +39,7 @@ from polygolf.engine.physics.geometry import Areas
 from polygolf.engine.physics.grid import FatBoxes, no_fat_pairs
 from polygolf.engine.physics.jit import COMPILED, kernel, numba, warm_up
 from polygolf.engine.physics.motion import accelerate, drag, kinetic_energy, turn
+from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 from polygolf.engine.systems.broadphase import BroadphaseProcessor, pick
 from polygolf.engine.systems.bumper import BumperProcessor, kick
 from polygolf.engine.systems.ccd import CCDProcessor, sweep
@@ -57,7 +58,7 @@ from polygolf.engine.systems.spin import SpinProcessor
 from polygolf.engine.systems.surface import scale_on_surfaces
 from polygolf.engine.systems.windmill import WindmillProcessor, drive
 
-# Stage codes, and the place of each stage's inputs in the inputs tuple (the last two have none).
+# Stage codes, and the place of each stage's inputs in the inputs tuple (the last one has none).
 (INTEGRATE, GRAVITY, SLOPE, SAND, ICE, DRAG, CCD, BROADPHASE, NARROWPHASE, RESOLVE, IMPACTS, CUP, WINDMILL,
  BUMPER, RESTITUTION, SPIN) = range(16)
 CODES: dict[type[esper.Processor], int] = {
@@ -203,7 +204,7 @@ def run_stages(held: Held, substeps: int, dt: float, stats: np.ndarray, metrics:
                 kick(state, table, inputs[BUMPER], dt)
             elif code == RESTITUTION:
                 if len(table[1]):
-                    stats[BOUNCES] += bounce(state, walls[4], table)
+                    stats[BOUNCES] += bounce(state, walls[4], table, inputs[RESTITUTION])
         if measure:
             measure_substep(state, stats, metrics)
         ran += 1
@@ -238,6 +239,7 @@ def _idle_inputs() -> tuple:
         (ints, np.zeros((0, 4)), flags, ints, np.zeros(1, dtype=np.int64)),  # cup
         (ints, floats),  # windmill
         (ints, floats, floats.copy()),  # bumper
+        RESTITUTION_THRESHOLD,  # restitution
     )
 
 
@@ -386,4 +388,4 @@ def _warm_alone() -> None:
     drop(state, IDLE[CUP])
     drive(state, IDLE[WINDMILL])
     kick(state, table, IDLE[BUMPER], dt)
-    bounce(state, walls[4], table)
+    bounce(state, walls[4], table, IDLE[RESTITUTION])

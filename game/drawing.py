@@ -375,7 +375,23 @@ def fit_camera(camera: arcade.Camera2D, bounds: tuple[float, float, float, float
                        (y0 + y1) / 2 + hud / 2 / camera.zoom + pan[1])
 
 
-PLAYER_COLOURS = (None, (79, 195, 247, 255), (239, 83, 80, 255), (186, 104, 200, 255))  # seat 1: the theme's
+# Seats 2 to 4 take the first of these that is not too like the theme's ball (seat 1's colour) or an
+# earlier seat's: Sand's blue ball would otherwise share seat 2's blue, Night's pink one seat 3's red.
+SEAT_COLOURS: tuple[RGBA, ...] = ((79, 195, 247, 255), (239, 83, 80, 255), (186, 104, 200, 255),
+                                  (255, 167, 38, 255), (245, 245, 245, 255))
+SEAT_DISTANCE = 70.0  # RGB distance under which two balls are taken for one (as tests/test_theme_colours)
+
+
+def player_colour(theme: Theme, seat: int) -> RGBA:
+    """The colour of seat `seat`'s ball (0-based): seat 0 the theme's ball, the others each a colour
+    of their own, far enough from the ball's and from each other's to tell apart on the green."""
+    taken = [theme.rgba("ball")]
+    for colour in SEAT_COLOURS:
+        if len(taken) > seat:
+            break
+        if all(math.dist(colour[:3], other[:3]) >= SEAT_DISTANCE for other in taken):
+            taken.append(colour)
+    return taken[seat] if seat < len(taken) else SEAT_COLOURS[seat % len(SEAT_COLOURS)]
 
 
 class PlayerBallArt(PolygonArt):
@@ -383,7 +399,7 @@ class PlayerBallArt(PolygonArt):
     on the green can tell whose ball is whose."""
 
     def __init__(self, outline: Sequence[polygon.Vec], theme: Theme, seat: int) -> None:
-        super().__init__(outline, theme, colour=PLAYER_COLOURS[seat % len(PLAYER_COLOURS)])
+        super().__init__(outline, theme, colour=player_colour(theme, seat))
 
     @property
     def colour(self) -> RGBA:
@@ -406,9 +422,30 @@ def fit_width(text: arcade.Text, full: str, width: float, size: float, smallest:
         text.font_size = max(smallest, text.font_size * width / max(text.content_width, 1.0))
         if text.content_width <= width or text.font_size <= smallest:
             break
+    while text.content_width > width and text.font_size > smallest:  # glyphs come in whole pixel sizes:
+        text.font_size = max(smallest, text.font_size - 0.5)  # a width can stay put as the size falls a little
     if text.content_width <= width:
         return
     keep = len(full)
     while keep > 1 and text.content_width > width:
         keep -= 1
         text.text = full[:keep].rstrip() + "…"
+
+
+def text_box(text: arcade.Text) -> tuple[float, float, float, float]:
+    """(left, bottom, right, top) of what `text` shows on the screen, whatever its anchors, and
+    inside a wider wrapping width as its alignment puts it."""
+    left, right = text.left, text.right
+    spare = (right - left) - text.content_width
+    left += {"left": 0.0, "center": spare / 2, "right": spare}.get(text.align, 0.0) if text.multiline else 0.0
+    return left, text.bottom, left + text.content_width, text.bottom + text.content_height
+
+
+def draw_backed(text: arcade.Text, backing: RGBA, pad: float = 12.0) -> None:
+    """`text` on a `backing` panel `pad` pixels wider each side (half that above and below), so it
+    reads over anything: a hole, or a background its colour is too close to."""
+    if not text.text:
+        return
+    left, bottom, right, top = text_box(text)
+    arcade.draw_lrbt_rectangle_filled(left - pad, right + pad, bottom - pad / 2, top + pad / 2, backing)
+    text.draw()

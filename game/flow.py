@@ -70,7 +70,7 @@ class ScreenFlow:
         if self.game.guide_seen:
             self.next_hole()
         else:
-            self._show(GuideView(self.game, then=self.next_hole))
+            self._show(GuideView(self.game, then=self.next_hole, back=self.menu))
 
     def names(self) -> None:
         self._show(NamesView(self.game, self))

@@ -4,6 +4,8 @@ database broken between launches."""
 
 from __future__ import annotations
 
+import time
+
 import arcade
 import pytest
 
@@ -281,7 +283,11 @@ def test_screens_keep_long_names_and_scores_inside_their_places(window, size, sh
     from polygolf.game.session import Round
 
     window.set_size(*size)
-    window.dispatch_events()
+    for _ in range(50):  # (the X server may take a moment: a screen drawn before would be the old size's)
+        window.dispatch_events()
+        if window.get_size() == size:
+            break
+        time.sleep(0.01)
     game = Game.load()
     course = find_course(game.courses, "meadow")
     round_ = Round(course, players=list(LONG_NAMES))

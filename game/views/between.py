@@ -4,12 +4,12 @@ the best ever kept for it, and the next hole's number and par."""
 from __future__ import annotations
 
 import arcade
-from arcade.gui import UIAnchorLayout, UIView
+from arcade.gui import UIView
 
-from polygolf.game.drawing import fit_width
+from polygolf.game.drawing import draw_backed, fit_width
 from polygolf.game.session import Game, HoleResult, Round, golf_name, par_text, penalty_text, strokes_text
 from polygolf.game.views.navigation import Navigator, window_key
-from polygolf.game.views.widgets import themed_button, title
+from polygolf.game.views.widgets import KeyboardButtons, themed_button, title
 
 PLAYERS_FONT = 17
 BUTTON_TOP = 108  # px: the button's top edge above the window's bottom
@@ -57,7 +57,7 @@ class BetweenView(UIView):
             if upcoming is not None else "That was the last hole"
         self.next_text = arcade.Text(nxt, 0, 0, theme.rgba("text"), 20, anchor_x="center", anchor_y="center",
                                      bold=True)
-        self.skipped = arcade.Text("\n".join(round_.skipped), 0, 0, theme.rgba("arrow_strong"), 12,
+        self.skipped = arcade.Text("\n".join(round_.skipped), 0, 0, theme.rgba("text"), 12,
                                    anchor_x="center", anchor_y="top", multiline=True, width=1000, align="center")
         self._lines = {text: (text.text, text.font_size) for text in (self.headline, self.detail, self.best,
                                                                         self.next_text)}
@@ -65,9 +65,10 @@ class BetweenView(UIView):
         self._squeeze, self._top = 1.0, 0.0
         button = themed_button(theme, "Next hole" if upcoming else "Scorecard", width=260, clicks=self.game.sound)
         button.on_click = self.on_continue  # type: ignore[method-assign]
-        anchor = UIAnchorLayout()
+        anchor = KeyboardButtons()
         anchor.add(button, anchor_x="center_x", anchor_y="bottom", align_y=BUTTON_TOP - 48)
         self.ui.add(anchor)
+        anchor.focus()
 
     def on_continue(self, _event=None) -> None:
         self.flow.next_hole()
@@ -86,9 +87,16 @@ class BetweenView(UIView):
             return
         self._fitted_to = (w, h)
         self.lines.font_size, self.lines.width = PLAYERS_FONT, 10_000  # (no wrapping: the widest line's width)
-        widest = self.lines.content_width
-        self.lines.font_size = max(9.0, PLAYERS_FONT * min(1.0, (w - 40) / max(widest, 1.0)))
-        self.lines.width = self.skipped.width = min(1100, w - 40)
+        self.lines.font_size = max(9.0, PLAYERS_FONT * min(1.0, (w - 40) / max(self.lines.content_width, 1.0)))
+        while self.lines.font_size > 9.0:  # smaller until no line wraps at the width it was chosen for
+            self.lines.width = 10_000
+            unwrapped = self.lines.content_height
+            self.lines.width = w - 40
+            if self.lines.content_height <= unwrapped:
+                break
+            self.lines.font_size = max(9.0, self.lines.font_size - 0.5)  # (a space can tip a line over)
+        self.lines.width = w - 40
+        self.skipped.width = min(1100, w - 40)
         for text, (full, size) in self._lines.items():
             fit_width(text, full, w - 40, size)
         # From the headline's centre down to the next hole's line: fixed gaps and the players' lines,
@@ -117,6 +125,6 @@ class BetweenView(UIView):
         self.best.draw()
         self.next_text.position = (w / 2, below - to_best - to_next)
         self.next_text.draw()
-        if self.round.skipped:
+        if self.round.skipped:  # on a panel: a problem, said in the text's colour, which reads on any theme
             self.skipped.position = (w / 2, below - to_best - to_next - 35)
-            self.skipped.draw()
+            draw_backed(self.skipped, self.game.theme.rgba("panel"), pad=8.0)

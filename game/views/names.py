@@ -1,5 +1,6 @@
 """The players' names, one box each (the count is the menu's Players choice). Enter or Done keeps
 them (an empty box keeps its default, a repeated name is numbered); Esc leaves them as they were.
+Tab moves to the next box, Shift+Tab back; F11 works here as everywhere (M is a letter in a name).
 
 A player named CPU is the computer (`session.is_computer`): each row's Computer button names its
 seat so (or gives it back a person's name), and the Computer plays button sets how well it aims."""
@@ -7,14 +8,31 @@ seat so (or gives it back a person's name), and the Computer plays button sets h
 from __future__ import annotations
 
 import arcade
-from arcade.gui import UIAnchorLayout, UIBoxLayout, UIFlatButton, UIInputText, UILabel, UIView
+from arcade.gui import UIAnchorLayout, UIBoxLayout, UIFlatButton, UILabel, UIView
+from arcade.gui.experimental.restricted_input import UIRestrictedInput
 
-from polygolf.game.drawing import PLAYER_COLOURS
+from polygolf.game.drawing import player_colour
 from polygolf.game.session import Game, is_computer
-from polygolf.game.views.navigation import Navigator
+from polygolf.game.views.navigation import Navigator, window_key
 from polygolf.game.views.widgets import themed_button, title
 
 MAX_NAME = 20
+ROW_HEIGHT = (32, 40)  # px: a row's height, in the shortest window and where there is room
+ROW_GAP = (6, 14)  # px between rows: when rows would be under 36 px, and otherwise
+MARGIN = 10  # px
+TALL = 600  # px: a window this high has the large title
+
+
+class NameBox(UIRestrictedInput):
+    """A name's box: it takes no more than MAX_NAME characters (typed or pasted), its text in the
+    middle of its height."""
+
+    def __init__(self, **kwargs) -> None:
+        super().__init__(**kwargs)
+        self.layout.content_valign = "center"
+
+    def validate(self, text: str) -> bool:
+        return len(text) <= MAX_NAME
 
 
 class NamesView(UIView):
@@ -25,37 +43,72 @@ class NamesView(UIView):
         theme = game.theme
         self.background_color = theme.rgba("background")
         self.title = title("Who is playing?", theme, 36)
-        self.hint = arcade.Text("Tab: next name   Enter: done   Esc: back, unchanged   A player named CPU is the "
-                                "computer", 0, 0, theme.rgba("text"), 13, anchor_x="center", anchor_y="center",
-                                italic=True)
-        column = UIBoxLayout(vertical=True, space_between=14)
-        self.boxes: list[UIInputText] = []
+        self.hint = arcade.Text("Tab: next name   Shift+Tab: back   Enter: done   Esc: back, unchanged   "
+                                "A player named CPU is the computer", 0, 0, theme.rgba("text"), 13,
+                                anchor_x="center", anchor_y="top", italic=True, multiline=True, width=1200,
+                                align="center")
+        self.column = UIBoxLayout(vertical=True, space_between=ROW_GAP[1])
+        self.rows: list[UIBoxLayout] = []
+        self.boxes: list[NameBox] = []
         self.toggles: list[UIFlatButton] = []  # each row's Person / Computer button
         for seat, name in enumerate(game.players):
             row = UIBoxLayout(vertical=False, space_between=16)
-            colour = PLAYER_COLOURS[seat] or theme.rgba("ball")
-            row.add(UILabel(text=f"Player {seat + 1}", width=130, font_size=16, text_color=colour, bold=True))
-            box = UIInputText(text=name, width=320, height=40, font_size=16, text_color=theme.rgba("text"),
-                              caret_color=theme.rgba("text"))
+            row.add(UILabel(text=f"Player {seat + 1}", width=130, font_size=16, text_color=player_colour(theme, seat),
+                            bold=True))
+            box = NameBox(text=name[:MAX_NAME], width=320, height=ROW_HEIGHT[1], font_size=16,
+                          text_color=theme.rgba("text"), caret_color=theme.rgba("text"))
             box.with_background(color=theme.rgba("panel"))
             row.add(box)
-            toggle = themed_button(theme, self.toggle_text(name), width=130, height=40, font_size=13)
+            toggle = themed_button(theme, self.toggle_text(name), width=130, height=ROW_HEIGHT[1], font_size=13)
             toggle.on_click = lambda _event, seat=seat: self.on_toggle(seat)  # type: ignore[method-assign]
             row.add(toggle)
-            column.add(row)
+            self.column.add(row)
+            self.rows.append(row)
             self.boxes.append(box)
             self.toggles.append(toggle)
-        self.skill = themed_button(theme, self.skill_text(), width=320, height=40, font_size=14)
+        self.skill = themed_button(theme, self.skill_text(), width=320, height=ROW_HEIGHT[1], font_size=14)
         self.skill.on_click = self.on_skill  # type: ignore[method-assign]
-        column.add(self.skill)
-        done = themed_button(theme, "Done", width=220)
-        done.on_click = self.on_done  # type: ignore[method-assign]
-        column.add(done)
-        anchor = UIAnchorLayout()
-        anchor.add(column, anchor_x="center_x", anchor_y="center_y", align_y=-20)
-        self.ui.add(anchor)
+        self.column.add(self.skill)
+        self.done = themed_button(theme, "Done", width=220, height=ROW_HEIGHT[1])
+        self.done.on_click = self.on_done  # type: ignore[method-assign]
+        self.column.add(self.done)
+        self.anchor = UIAnchorLayout()
+        self.anchor.add(self.column, anchor_x="center_x", anchor_y="top")
+        self.ui.add(self.anchor)
+        self.lay_out(self.window.width, self.window.height)
         if self.boxes:
             self.boxes[0].activate()
+
+    def lay_out(self, w: int, h: int) -> None:
+        """The title, the hint (wrapped to the window) under it, and the rows in the room under that:
+        as high as fits above the window's bottom, closer together in a short window."""
+        tall = h >= TALL
+        self.title.font_size = 36 if tall else 26
+        self.title.position = (w / 2, h - (70 if tall else 30))
+        self.hint.font_size = 13 if tall else 12
+        self.hint.width = w - 4 * MARGIN
+        self.hint.position = (w / 2, self.title.bottom - (16 if tall else 6))
+        top = self.hint.bottom - (24 if tall else 10)
+        rows = len(self.boxes) + 2
+        gap = ROW_GAP[1]
+        height = (top - MARGIN - gap * (rows - 1)) / rows
+        if height < 36:
+            gap = ROW_GAP[0]
+            height = (top - MARGIN - gap * (rows - 1)) / rows
+        height = max(ROW_HEIGHT[0], min(ROW_HEIGHT[1], height))
+        top -= max(0.0, top - MARGIN - rows * height - (rows - 1) * gap) / 2  # in the middle of the room left
+        for widget in (*self.boxes, *self.toggles, self.skill, self.done):
+            widget.rect = widget.rect.resize(height=height)
+        column = UIBoxLayout(vertical=True, space_between=gap)  # (a box layout's spacing is set when it is made)
+        for child in (*self.rows, self.skill, self.done):
+            self.column.remove(child)
+            column.add(child)
+        self.anchor.clear()
+        self.anchor.add(column, anchor_x="center_x", anchor_y="top", align_y=top - h)
+        self.column = column
+
+    def on_resize(self, width: int, height: int) -> None:
+        self.lay_out(width, height)
 
     def names(self) -> list[str]:
         """The boxes' names, tidied: trimmed to MAX_NAME, empty ones and repeats given defaults."""
@@ -95,6 +148,8 @@ class NamesView(UIView):
         self.flow.menu()
 
     def on_key_press(self, symbol: int, modifiers: int) -> bool | None:
+        if symbol == arcade.key.F11:  # (not M: it is typed into a name)
+            return window_key(self.window, self.game, symbol)
         if symbol in (arcade.key.ENTER, arcade.key.RETURN):
             self.on_done()
             return True
@@ -103,9 +158,10 @@ class NamesView(UIView):
             return True
         if symbol == arcade.key.TAB and self.boxes:
             active = next((k for k, box in enumerate(self.boxes) if box.active), -1)
+            step = -1 if modifiers & arcade.key.MOD_SHIFT else 1
             for box in self.boxes:
                 box.deactivate()
-            self.boxes[(active + 1) % len(self.boxes)].activate()
+            self.boxes[(active + step) % len(self.boxes) if active >= 0 or step > 0 else -1].activate()
             return True
         return None
 
@@ -114,8 +170,5 @@ class NamesView(UIView):
             text = self.toggle_text(box.text)
             if toggle.text != text:
                 toggle.text = text
-        w, h = self.window.width, self.window.height
-        self.title.position = (w / 2, h - 90)
         self.title.draw()
-        self.hint.position = (w / 2, h - 140)
         self.hint.draw()

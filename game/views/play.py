@@ -34,6 +34,7 @@ from polygolf.game.drawing import (
     PlayerBallArt,
     dotted_path,
     draw_arrow,
+    draw_backed,
     draw_trail,
     draw_turn_ring,
     fit_camera,
@@ -49,7 +50,8 @@ GRAB_PIXELS = 18  # ... or this many pixels, when the ball is drawn small
 FINISH_PAUSE = 1.0  # seconds between the ball dropping and the next screen
 PRESET_KEYS = {arcade.key.KEY_1: "fast", arcade.key.KEY_2: "balanced", arcade.key.KEY_3: "accurate"}
 OVERLAY_LINES = 24
-OVERLAY_WIDTH = 330  # pixels: the F3 panel on the left; the hole is fitted beside it
+OVERLAY_WIDTH = 360  # pixels: the F3 panel on the left; the hole is fitted beside it
+OVERLAY_FONT, OVERLAY_STEP, OVERLAY_PAD = 11, 17, 10  # its largest font size, line spacing and margins (px)
 SMOOTHING = 0.1  # weight of the newest frame in the overlay's running averages
 DROP_SECONDS = 0.35  # the ball slides from where it was to the cup's centre, shrinking
 LIP_WOBBLE = 0.07  # metres the drawn ball dips toward a cup it rolls over
@@ -81,12 +83,13 @@ class PlayView(arcade.View):
         self.banner = arcade.Text("", 0, 0, theme.rgba("text"), 13, anchor_x="center", anchor_y="center",
                                   multiline=True, width=900, align="center")
         self.banner_time = 0.0
-        self._hud_lines = {name: "" for name in self.hud_texts}  # as laid out (`place_hud`), and for what width
-        self._hud_width = 0
+        self._hud_lines = {name: "" for name in self.hud_texts}  # as laid out (`place_hud`)
+        self._hud_laid_for: tuple[int, bool] = (0, False)  # window width, and whether the F3 panel showed
         self.hint_label = arcade.Text("", 0, 0, theme.rgba("text"), 11, anchor_x="center", anchor_y="center")
         self.overlay = False
-        self.overlay_texts = [arcade.Text("", 0, 0, theme.rgba("text"), 11, font_name=("DejaVu Sans Mono", "monospace"))
-                              for _ in range(OVERLAY_LINES)]
+        self.overlay_texts = [arcade.Text("", 0, 0, theme.rgba("text"), OVERLAY_FONT, anchor_y="center",
+                                          font_name=("DejaVu Sans Mono", "monospace")) for _ in range(OVERLAY_LINES)]
+        self._overlay_fitted_for: tuple[int, int] = (0, 0)  # (longest line's characters, window height)
         self.system_us: dict[str, float] = {}
         self.frame_seconds: deque[float] = deque(maxlen=120)  # real time between updates, for F3
         self.draw_ms = 0.0
@@ -225,12 +228,13 @@ class PlayView(arcade.View):
     def place_hud(self, lines: dict[str, str] | None = None) -> None:
         """The HUD's lines laid out in the window's width (again only when a line or the width
         changed): the course at the left, the strokes at the right and the hole between them, centred
-        where there is room; all three smaller when they do not fit, the hole's name cut short last."""
+        where there is room; all three smaller when they do not fit, the hole's name cut short last.
+        The players' line under the bar keeps right of the F3 panel when it shows."""
         lines = lines or self._hud_lines
         w = self.window.width
-        if lines == self._hud_lines and w == self._hud_width:
+        if lines == self._hud_lines and (w, self.overlay) == self._hud_laid_for:
             return
-        self._hud_lines, self._hud_width = lines, w
+        self._hud_lines, self._hud_laid_for = lines, (w, self.overlay)
         texts = self.hud_texts
         for name in ("course", "hole", "strokes"):
             texts[name].text, texts[name].font_size = lines[name], HUD_FONT
@@ -245,7 +249,8 @@ class PlayView(arcade.View):
         half = texts["hole"].content_width / 2
         centre = w / 2 if left <= w / 2 - half and w / 2 + half <= right else (left + right) / 2
         texts["hole"].x = centre
-        fit_width(texts["players"], lines["players"], w - 2 * HUD_MARGIN, 13, HUD_SMALLEST)
+        panel = OVERLAY_WIDTH if self.overlay else 0
+        fit_width(texts["players"], lines["players"], w - panel - 2 * HUD_MARGIN, 13, HUD_SMALLEST)
         self.banner.width = min(900, w - 40)
 
     def scoreboard(self) -> str:
@@ -445,11 +450,29 @@ class PlayView(arcade.View):
         """A panel down the left, beside the fitted hole (`fit` leaves it room)."""
         lines = self.overlay_lines()
         top = self.window.height - HUD_HEIGHT
+        step = self.fit_overlay(lines)
         arcade.draw_lrbt_rectangle_filled(0, OVERLAY_WIDTH, 0, top, self.game.theme.rgba("panel"))
         for text, line, i in zip(self.overlay_texts, lines, range(len(lines))):
             text.text = line
-            text.position = (10, top - 20 - 17 * i)
+            text.position = (OVERLAY_PAD, top - OVERLAY_PAD - step * (i + 0.5))
             text.draw()
+
+    def fit_overlay(self, lines: list[str]) -> float:
+        """The F3 panel's one font size, so its longest line fits the panel's width and every line
+        its height (a monospaced font: a line's width goes with its characters); returns the line
+        spacing. Measured again only when the longest line or the window's height changes."""
+        top = self.window.height - HUD_HEIGHT
+        step = min(OVERLAY_STEP, (top - 2 * OVERLAY_PAD) / max(len(lines), 1))
+        longest = max((len(line) for line in lines), default=1)
+        if (longest, self.window.height) != self._overlay_fitted_for:
+            self._overlay_fitted_for = (longest, self.window.height)
+            probe = self.overlay_texts[0]
+            probe.text, probe.font_size = "0" * longest, OVERLAY_FONT
+            by_width = OVERLAY_FONT * (OVERLAY_WIDTH - 2 * OVERLAY_PAD) / max(probe.content_width, 1.0)
+            size = min(OVERLAY_FONT, by_width, OVERLAY_FONT * step / OVERLAY_STEP)
+            for text in self.overlay_texts:
+                text.font_size = size
+        return step
 
     def finish_hole(self) -> None:
         self.caddie.close()
@@ -489,7 +512,7 @@ class PlayView(arcade.View):
             text.draw()
         self.draw_hint_label()
         if self.banner_time > 0:
-            self.draw_backed(self.banner)
+            draw_backed(self.banner, theme.rgba("panel"))
         if self.overlay:
             self.draw_overlay()
         if self.session.hole_over:
@@ -523,7 +546,7 @@ class PlayView(arcade.View):
         length = math.hypot(*hint.arrow) or 1.0
         self.hint_label.text = f"hint ({self.caddie.hint_level()})"
         self.hint_label.position = (x + 26 * hint.arrow[0] / length, y + 26 * hint.arrow[1] / length + 14)
-        self.draw_backed(self.hint_label, pad=5.0)
+        draw_backed(self.hint_label, self.game.theme.rgba("panel"), pad=5.0)
 
     def draw_balls(self, alpha: float) -> None:
         """Every ball still on the green between its last two poses, with a ring around the ball whose
@@ -573,14 +596,6 @@ class PlayView(arcade.View):
                 r = 0.2 + 1.2 * t * ring
                 arcade.draw_circle_outline(x, y, r, shade(colour, 0.7, round(220 * (1 - t))), 0.08, num_segments=32)
 
-    def draw_backed(self, text: arcade.Text, pad: float = 12.0) -> None:
-        """A text on a panel, so it reads over any part of the course."""
-        width, height = text.content_width, text.content_height
-        x, y = text.position[0], text.position[1]
-        arcade.draw_lrbt_rectangle_filled(x - width / 2 - pad, x + width / 2 + pad, y - height / 2 - pad / 2,
-                                          y + height / 2 + pad / 2, self.game.theme.rgba("panel"))
-        text.draw()
-
     def draw_finish_message(self, w: int, h: int) -> None:
         if self.finish_text is None:
             words = "Picked up" if self.world.state.picked_up else "In the cup!"
@@ -588,4 +603,4 @@ class PlayView(arcade.View):
                 words = "Hole over"
             self.finish_text = arcade.Text(words, w / 2, (h - HUD_HEIGHT) / 2, self.game.theme.rgba("text"), 36,
                                            anchor_x="center", anchor_y="center", bold=True)
-        self.draw_backed(self.finish_text, pad=24.0)
+        draw_backed(self.finish_text, self.game.theme.rgba("panel"), pad=24.0)

@@ -1,6 +1,9 @@
 """Watching: a round (or the last shot of a hole) simulated again from recorded inputs and drawn as it
 happens. The session (`session.RoundPlay` fed with the inputs) does the simulating; this screen only
-paces and draws it. Esc or Enter stops watching; F plays four times as fast."""
+paces and draws it. Esc or Enter stops watching; F plays four times as fast; F11 and M as everywhere.
+
+The HUD bar says what is shown and where, fitted between the window's left and the keys' hint; when
+several play, their scores are a line of their own under it, as in the play view."""
 
 from __future__ import annotations
 
@@ -8,11 +11,13 @@ from collections.abc import Callable
 
 import arcade
 
-from polygolf.game.drawing import HUD_HEIGHT, HoleArt, PlayerBallArt, fit_camera
+from polygolf.game.drawing import HUD_HEIGHT, HoleArt, PlayerBallArt, fit_camera, fit_width
 from polygolf.game.session import Game, RoundPlay, strokes_text
+from polygolf.game.views.navigation import window_key
 
 END_PAUSE = 1.0  # s the last picture stays before the next hole or the end
 OVERRUN = 60 * 30  # frames past a hole's last recorded input before the replay is called out of step
+HUD_FONT, HUD_SMALLEST, HUD_MARGIN = 15, 10, 16  # as the play view's HUD
 
 
 class ReplayView(arcade.View):
@@ -33,7 +38,10 @@ class ReplayView(arcade.View):
         self.camera = arcade.Camera2D()
         theme = game.theme
         self.background_color = theme.rgba("background")
-        self.hud = arcade.Text("", 16, 0, theme.rgba("text"), 15, anchor_y="center", bold=True)
+        self.hud = arcade.Text("", 16, 0, theme.rgba("text"), HUD_FONT, anchor_y="center", bold=True)
+        self.scores = arcade.Text("", 0, 0, theme.rgba("text"), 13, anchor_x="right", anchor_y="center")
+        self._fitted_for: tuple = ()  # the HUD's lines, the message and the window they were fitted for
+        self.message_text = ""
         self.hint = arcade.Text("Esc: back   F: faster", 0, 0, theme.rgba("text"), 13, anchor_x="right",
                                 anchor_y="center")
         self.message = arcade.Text("", 0, 0, theme.rgba("text"), 30, anchor_x="center", anchor_y="center", bold=True)
@@ -60,6 +68,8 @@ class ReplayView(arcade.View):
         self.fit()
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:
+        if window_key(self.window, self.game, symbol):
+            return
         if symbol in (arcade.key.ESCAPE, arcade.key.ENTER, arcade.key.RETURN, arcade.key.L):
             self.finish()
         elif symbol == arcade.key.F:
@@ -87,7 +97,7 @@ class ReplayView(arcade.View):
         if not self.at_end():
             session.step(4 if self.fast else 1)
             if self.last_frame is None and session.frame > self.last_input_frame() + OVERRUN:
-                self.message.text = "This replay is out of step with the game"
+                self.message_text = "This replay is out of step with the game"
                 self.last_frame = session.frame  # stop here
             return
         self.done_for += delta_time
@@ -108,9 +118,32 @@ class ReplayView(arcade.View):
 
     # -- drawing ----------------------------------------------------------------------------------
 
+    def hud_lines(self) -> tuple[str, str]:
+        """What is shown ('Ann's last shot · hole 2: Dog-leg'), with the score when one plays; and
+        when several play, everyone's score for a line of its own ('Ann: 2 strokes · Bob: 1 stroke')."""
+        session, hole = self.session, self.session.hole
+        what = f"{self.title} · hole {session.round.number}: {hole.hole.spec.name}"
+        scores = " · ".join(f"{name}: {strokes_text(p.state.score)}" for name, p in zip(session.players, hole.players))
+        fast = "   (x4)" if self.fast else ""
+        return (f"{what} · {scores}{fast}", "") if len(hole.players) == 1 else (f"{what}{fast}", scores)
+
+    def place_hud(self, w: int, h: int) -> None:
+        """The HUD's line fitted left of the keys' hint, the scores' line under the bar and the
+        message fitted to the window (again only when a line or the window changed)."""
+        line, scores = self.hud_lines()
+        if (line, scores, self.message_text, w, h) == self._fitted_for:
+            return
+        self._fitted_for = (line, scores, self.message_text, w, h)
+        fit_width(self.message, self.message_text, w - 2 * HUD_MARGIN, 30, 14)
+        self.message.position = (w / 2, (h - HUD_HEIGHT) / 2)
+        fit_width(self.hud, line, w - self.hint.content_width - 3 * HUD_MARGIN, HUD_FONT, HUD_SMALLEST)
+        self.hud.position = (HUD_MARGIN, h - HUD_HEIGHT / 2)
+        fit_width(self.scores, scores, w - 2 * HUD_MARGIN, 13, HUD_SMALLEST)
+        self.scores.position = (w - HUD_MARGIN, h - HUD_HEIGHT - 14)
+
     def on_draw(self) -> None:
         self.clear()
-        session, hole = self.session, self.session.hole
+        hole = self.session.hole
         w, h = self.window.width, self.window.height
         if hole is not None:
             with self.camera.activate():
@@ -118,17 +151,14 @@ class ReplayView(arcade.View):
                                    self.game.theme)
                 for seat, player in enumerate(hole.players):
                     if not player.state.finished:
-                        self.ball_arts[seat].draw(player.body.x, player.body.y, player.body.angle)
+                        self.ball_arts[seat].draw(player.body.x, player.body.y, player.body.angle, shadow=True)
+                self.hole_art.draw_flag()
             self.window.default_camera.use()
-            scores = " · ".join(f"{name}: {strokes_text(p.state.score)}"
-                                for name, p in zip(session.players, hole.players))
-            self.hud.text = (f"{self.title} · hole {session.round.number}: {hole.hole.spec.name} · {scores}"
-                             + ("   (x4)" if self.fast else ""))
+            self.place_hud(w, h)
         arcade.draw_lrbt_rectangle_filled(0, w, h - HUD_HEIGHT, h, self.game.theme.rgba("panel"))
-        self.hud.position = (16, h - HUD_HEIGHT / 2)
         self.hud.draw()
-        self.hint.position = (w - 16, h - HUD_HEIGHT / 2)
+        self.hint.position = (w - HUD_MARGIN, h - HUD_HEIGHT / 2)
         self.hint.draw()
-        if self.message.text:
-            self.message.position = (w / 2, (h - HUD_HEIGHT) / 2)
+        self.scores.draw()
+        if self.message_text:
             self.message.draw()

@@ -7,14 +7,15 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import arcade
-from arcade.gui import UIAnchorLayout, UIBoxLayout, UIView
+from arcade.gui import UIBoxLayout, UIView
 
-from polygolf.game.drawing import fit_width
+from polygolf.game.drawing import draw_backed, fit_width
 from polygolf.game.session import Game, HoleResult, Round, par_text, strokes_text
 from polygolf.game.views.navigation import Navigator, window_key
-from polygolf.game.views.widgets import themed_button, title
+from polygolf.game.views.widgets import KeyboardButtons, themed_button, title
 
-LABEL_WIDTH = (110.0, 220.0)  # the label column: fits the longest label, within these
+LABEL_WIDTH = (110.0, 220.0, 360.0)  # px: the label column fits the longest label, at least the first, at most
+# the second or, in a wide window, a quarter of it up to the third (long names stay large at 1920 px)
 CELL_WIDTH = 96.0
 BELOW_TABLE = 200.0  # px under the table: the winner, the best, the notes and the buttons
 
@@ -74,7 +75,7 @@ class ResultsView(UIView):
                                 theme.rgba("text"), 14, anchor_x="center", anchor_y="center", italic=True)
         warnings = game.store.warnings[-1:] if game.store is not None else []
         self.warning = arcade.Text(" ".join(w.removeprefix("polygolf: ") for w in warnings), 0, 0,
-                                   theme.rgba("arrow_strong"), 12, anchor_x="center", anchor_y="top", multiline=True,
+                                   theme.rgba("text"), 12, anchor_x="center", anchor_y="top", multiline=True,
                                    width=1100, align="center")
         self.cells: list[Cell] = []
         results = round_.results
@@ -99,21 +100,24 @@ class ResultsView(UIView):
                                                    bold=bold), col, row, value, short, size))
         self.columns = len(results) + 2
         self.rows = len(rows)
-        self._label_width = min(LABEL_WIDTH[1], max(LABEL_WIDTH[0], 20.0 + max(
-            cell.text.content_width for cell in self.cells if cell.col == 0)))
+        self._label_width = max(LABEL_WIDTH[0], 20.0 + max(cell.text.content_width for cell in self.cells
+                                                           if cell.col == 0))
         self._sized_for: tuple[int, int] | None = None
         self.note = arcade.Text("* picked up after the last stroke allowed"
                                 if any(r.picked_up for card in round_.cards for r in card) else "", 0, 0,
                                 theme.rgba("text"), 12, anchor_x="center", anchor_y="center")
         self._lines = {text: (text.text, text.font_size) for text in (self.summary, self.best, self.note)}
         row_box = UIBoxLayout(vertical=False, space_between=16)
-        for text, action in (("Play again", self.on_again), ("Main menu", self.on_menu)):
+        self.buttons = {}
+        for key, text, action in (("again", "Play again", self.on_again), ("menu", "Main menu", self.on_menu)):
             button = themed_button(theme, text, width=220, clicks=self.game.sound)
             button.on_click = action  # type: ignore[method-assign]
             row_box.add(button)
-        anchor = UIAnchorLayout()
+            self.buttons[key] = button
+        anchor = KeyboardButtons()
         anchor.add(row_box, anchor_x="center_x", anchor_y="bottom", align_y=30)
         self.ui.add(anchor)
+        anchor.focus(self.buttons["menu"])  # where Enter and Esc always went; the arrows reach Play again
 
     def summary_line(self) -> str:
         round_ = self.round
@@ -145,7 +149,8 @@ class ResultsView(UIView):
         as large as its widest cell allows (a hole's score without its "(+1)" if that would be under
         10 points; a long name cut short); the running rows are left out where the window is too
         low for every row to be readable."""
-        label_w = min(self._label_width, 0.3 * (w - 60))
+        roomy = min(0.25 * w, LABEL_WIDTH[2], w - 60 - CELL_WIDTH * (self.columns - 1))  # (cells kept full width)
+        label_w = min(self._label_width, max(LABEL_WIDTH[1], roomy), 0.3 * (w - 60))
         cell_w = min(CELL_WIDTH, (w - 60 - label_w) / (self.columns - 1))
         top = h - (95 if h >= 600 else 62)
         room = top - BELOW_TABLE
@@ -195,9 +200,11 @@ class ResultsView(UIView):
                 cell.text.position = (x, top - (places[cell.row] + 0.5) * cell_h)
                 cell.text.draw()
         bottom = top - height
-        for text, dy in ((self.summary, 35), (self.best, 65), (self.note, 90), (self.warning, 108)):
+        for text, dy in ((self.summary, 35), (self.best, 65), (self.note, 90)):
             text.position = (w / 2, bottom - dy)
             text.draw()
+        self.warning.position = (w / 2, bottom - 108)  # on a panel: the text's colour reads on any theme
+        draw_backed(self.warning, theme.rgba("panel"), pad=8.0)
 
 
 def _fit_row(cells: list[Cell], width: float, height: float, readable: float) -> None:

@@ -798,14 +798,6 @@ def _any_bounce(points: np.ndarray, start: int, stop: int, threshold: float) -> 
     return False
 
 
-@leaf_kernel
-def _root(group: np.ndarray, j: int) -> int:
-    while group[j] != j:
-        group[j] = group[group[j]]
-        j = group[j]
-    return j
-
-
 def apply_restitution(table: ContactTable, threshold: float) -> int:
     """Poisson restitution: every point that was approaching faster than `threshold` gets e times
     its compression impulse again. Returns how many points bounced. Runs after `solve`, on the

@@ -720,18 +720,15 @@ def _bounce_scale(state: np.ndarray, pair: np.ndarray, normals: np.ndarray, firs
     more kinetic energy than before the substep's contact solve (`B_ENERGY0`): the energy after is
     quadratic in the scale. An island with a kinematic body (a windmill, which may well add energy)
     is left as it is. Unscaled, a bounce is the same floats as before this cap."""
+    if not _any_bounce(points, 0, first[pair.shape[0]], threshold):
+        return None  # (most substeps: nothing allocated)
     n = state.shape[0]
     group = np.arange(n)  # union-find over the body rows (the static world, row n, joins nothing)
-    any_bounce = False
     for k in range(pair.shape[0]):
         a, b = pair[k, 0], pair[k, 1]
         if a < n and b < n:
             ra, rb = _root(group, a), _root(group, b)
             group[max(ra, rb)] = min(ra, rb)
-        if not any_bounce:
-            any_bounce = _any_bounce(points, first[k], first[k + 1], threshold)
-    if not any_bounce:
-        return None
     bouncing = np.zeros(n, dtype=np.bool_)  # by island root
     change = np.zeros((n, 3))  # each body's velocity change by its bounces
     for k in range(pair.shape[0]):

@@ -11,6 +11,7 @@ import pytest
 
 from polygolf.engine.golf.golfer import golfer_for
 from polygolf.engine.loading.paths import data_dir
+from polygolf.game.drawing import text_box
 from polygolf.game.flow import ScreenFlow
 from polygolf.game.record import load_record
 from polygolf.game.replay import load_for_replay, verify
@@ -270,9 +271,9 @@ LONG_NAMES = ["Alexandra Worthingto", "Bob", "CPU", "Christopher Robinson"]
 
 
 def _extent(text: arcade.Text) -> tuple[float, float]:
-    """A text's left and right edges on the screen."""
-    left = text.x - {"left": 0.0, "center": 0.5, "right": 1.0}[text.anchor_x] * text.content_width
-    return left, left + text.content_width
+    """A text's left and right edges on the screen (`drawing.text_box`)."""
+    left, _, right, _ = text_box(text)
+    return left, right
 
 
 @pytest.mark.parametrize("size", [(640, 400), (800, 600), (1280, 720)])

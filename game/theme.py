@@ -7,7 +7,7 @@ from pathlib import Path
 from polygolf.engine.loading.limits import Colour, Name
 from polygolf.engine.loading.paths import content_roots
 from polygolf.engine.loading.scene import Strict_
-from polygolf.engine.loading.yamlsource import ContentError, load
+from polygolf.engine.loading.yamlsource import ContentError, line_of, load, load_yaml
 
 RGBA = tuple[int, int, int, int]
 
@@ -66,16 +66,52 @@ FALLBACK = Theme(
 
 def load_themes(directories: list[Path] | None = None) -> tuple[list[Theme], list[ContentError]]:
     """Every theme that loads from the content folders' themes/, in name order (grass first: it is
-    the default), and the problems of those that do not; a broken theme is left out, and with none
-    left the plain fallback is used."""
+    the default), and the problems of those that do not; a broken theme is left out, and so is one
+    whose name an earlier one has (the shipped folder's come first); with none left the plain
+    fallback is used."""
     themes, problems = [], []
-    folders = directories if directories is not None else [root / "themes" for root in content_roots()]
-    for path in (p for folder in folders for p in sorted(folder.glob("*.yaml"))):
+    taken: dict[str, Path] = {}
+    for path in theme_files(directories):
         try:
-            themes.append(load_theme(path))
+            theme = load_theme(path)
+            check_name_free(theme, path, taken)
         except ContentError as exc:
             problems.append(exc)
+            continue
+        taken[theme.name.lower()] = path
+        themes.append(theme)
     return sorted(themes, key=lambda t: (t.name != "Grass", t.name)) or [FALLBACK], problems
+
+
+def theme_files(directories: list[Path] | None = None) -> list[Path]:
+    """The theme files, in the order the game loads them (the shipped folder's first)."""
+    folders = directories if directories is not None else [root / "themes" for root in content_roots()]
+    return [p for folder in folders for p in sorted(folder.glob("*.yaml"))]
+
+
+def check_name_free(theme: Theme, path: Path, taken: dict[str, Path]) -> None:
+    """Raise a ContentError at the theme's name if a theme loaded before it has that name (in any
+    case: the command line finds a theme by it)."""
+    if theme.name.lower() in taken:
+        raise ContentError(path, line_of(("name",), load_yaml(path)[1]), "name",
+                           f"theme name {theme.name!r} is taken by {taken[theme.name.lower()]}: give this theme "
+                           "another name")
+
+
+def themes_before(path: Path) -> dict[str, Path]:
+    """The names of the themes the game loads before this file (every one, for a file it does not
+    load), each with its file."""
+    taken: dict[str, Path] = {}
+    for file in theme_files():
+        if file.resolve() == path.resolve():
+            break
+        try:
+            theme = load_theme(file)
+            check_name_free(theme, file, taken)
+        except ContentError:
+            continue  # (its own problems are its own)
+        taken[theme.name.lower()] = file
+    return taken
 
 
 def find_theme(themes: list[Theme], name: str) -> Theme:

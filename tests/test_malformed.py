@@ -402,6 +402,30 @@ def test_a_course_may_not_take_another_courses_id(content_copy, capsys):
     assert main(["validate"]) == 0
 
 
+def test_a_theme_may_not_take_another_themes_name(content_copy, capsys):
+    """The command line and the settings find a theme by its name in any case: the player's theme
+    named like a shipped one is left out, with one line at its name, and validate says the same."""
+    from polygolf.engine.loading.paths import user_content_dir
+    from polygolf.game.theme import load_themes
+
+    mine = user_content_dir() / "themes"
+    mine.mkdir(parents=True)
+    grass = (content_copy / "themes" / "grass.yaml").read_text()
+    assert "\nname: Grass\n" in grass  # (line 3, after two comments)
+    (mine / "dusk.yaml").write_text(grass.replace("name: Grass", "name: NIGHT"))
+    themes, problems = load_themes()
+    assert sorted(t.name for t in themes) == ["Grass", "Night", "Sand"]
+    assert [str(p) for p in problems] == [
+        f"{mine / 'dusk.yaml'}:3: name: theme name 'NIGHT' is taken by {content_copy / 'themes' / 'night.yaml'}: "
+        "give this theme another name"]
+    assert main(["validate", str(mine / "dusk.yaml")]) == 1
+    assert capsys.readouterr().err.strip().splitlines() == [str(problems[0])]
+    assert main(["validate", str(content_copy / "themes" / "night.yaml")]) == 0  # the first one keeps it
+    (mine / "dusk.yaml").write_text(grass.replace("name: Grass", "name: Dusk"))
+    assert main(["validate"]) == 0
+    assert "Dusk" in [t.name for t in load_themes()[0]]
+
+
 def test_a_link_to_itself_beside_a_watched_hole_does_not_end_the_watching(tmp_path):
     from polygolf.game.watch import FileWatcher
 

@@ -10,7 +10,7 @@ from polygolf.engine.loading.course import load_library
 from polygolf.engine.loading.paths import content_roots
 from polygolf.engine.loading.scene import load_scene
 from polygolf.engine.loading.yamlsource import ContentError, load_yaml
-from polygolf.game.theme import load_theme
+from polygolf.game.theme import check_name_free, load_theme, themes_before
 
 
 def check_file(path: Path) -> list[ContentError]:
@@ -28,7 +28,7 @@ def check_file(path: Path) -> list[ContentError]:
         elif kind == "scene":
             load_scene(path)
         elif kind == "theme":
-            load_theme(path)
+            check_name_free(load_theme(path), path, themes_before(path))
         else:
             load_yaml(path)
             return [ContentError(path, 1, "(file)", "not a known kind of content (tiles, courses, hole, scene, theme)")]

@@ -24,7 +24,7 @@ from typing import NoReturn
 from polygolf import __version__
 from polygolf.engine.golf.search import EFFORTS
 from polygolf.engine.loading.limits import MAX_SECONDS
-from polygolf.engine.loading.paths import content_roots
+from polygolf.engine.loading.paths import content_roots, named_file
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.engine.physics.presets import PRESETS
 from polygolf.game import startup
@@ -150,7 +150,7 @@ def _simulate(args: argparse.Namespace) -> int:
     from polygolf.engine.golf.scenes import build_scene_file
 
     frames = round(args.seconds * 60)
-    with build_scene_file(args.scene, args.preset) as sim:
+    with build_scene_file(named_file(args.scene, "scenes"), args.preset) as sim:
         startup.prepare_physics()
         started = time.perf_counter()
         shown = False
@@ -495,7 +495,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", description="with no command, the game opens at its menu")
 
     sim = sub.add_parser("simulate", help="run a physics scene headless and report the result")
-    sim.add_argument("scene", help="scene YAML file")
+    sim.add_argument("scene", help="scene YAML file, or a scene's name (pile)")
     sim.add_argument("--seconds", type=seconds_arg, default=2.0,
                      help=f"simulated time, 0 < s <= {MAX_SECONDS:g} (default 2)")
     sim.add_argument("--preset", choices=list(PRESETS), default=None,
@@ -589,7 +589,7 @@ def build_parser() -> argparse.ArgumentParser:
     sch.set_defaults(run=_schema)
 
     exp = sub.add_parser("explain", help="list a scene's or hole's pipeline and why each system is in it")
-    exp.add_argument("path", help="scene or hole YAML file, or COURSE:HOLE (meadow:3)")
+    exp.add_argument("path", help="scene or hole YAML file or name (pile, straight), or COURSE:HOLE (meadow:3)")
     exp.add_argument("--preset", choices=list(PRESETS), default=None)
     exp.set_defaults(run=_explain)
     return parser

@@ -476,6 +476,39 @@ def test_explain_takes_a_hole_file_from_any_folder(tmp_path, capsys):
     assert capsys.readouterr().out.startswith("Straight (straight) at balanced")
 
 
+def test_scenes_and_holes_are_found_by_name_from_any_folder(tmp_path, monkeypatch, capsys):
+    """An installed game's user is not in the source tree: the README's `content/scenes/...` paths,
+    and bare names, find the shipped files."""
+    monkeypatch.chdir(tmp_path)
+    for args, first in ((["simulate", "pile", "--seconds", "0.05"], "pile: 3 frames"),
+                        (["simulate", "content/scenes/flat-wall.yaml", "--seconds", "0.05"], "flat-wall: 3 frames"),
+                        (["explain", "corner"], "corner at balanced"),
+                        (["explain", "content/scenes/corner.yaml"], "corner at balanced"),
+                        (["explain", "straight"], "Straight (straight) at balanced")):
+        assert main(args) == 0, args
+        assert capsys.readouterr().out.startswith(first), args
+    assert main(["explain", "nosuch"]) == 2
+    assert capsys.readouterr().err.strip() == ("polygolf: no scene or hole 'nosuch': give a file, a scene or hole "
+                                               "name, or COURSE:HOLE")
+    (tmp_path / "pile.yaml").write_text("name: mine\nbodies:\n  - {name: b, shape: {regular: 4, radius: 0.1}, position: [0, 0]}\n")
+    # (a file that is there is the one meant)
+    assert main(["simulate", "pile.yaml", "--seconds", "0.05"]) == 0
+    assert capsys.readouterr().out.startswith("mine: 3 frames")
+
+
+def test_explain_finds_the_players_own_courses(content_copy, capsys):
+    from polygolf.engine.loading.paths import user_content_dir
+
+    mine = user_content_dir() / "holes"
+    mine.mkdir(parents=True)
+    (mine / "my-hole.yaml").write_text("name: Mine\npar: 2\ntiles:\n  - {at: [0, 0]}\n  - {at: [1, 0]}\n")
+    (mine / "courses.yaml").write_text("courses:\n  - name: My Course\n    holes: [my-hole]\n")
+    assert main(["explain", "my-course:1"]) == 0
+    assert capsys.readouterr().out.startswith("Mine (my-hole) at balanced")
+    assert main(["explain", "my-hole"]) == 0  # by name, in the player's folder
+    assert capsys.readouterr().out.startswith("Mine (my-hole) at balanced")
+
+
 def test_a_file_of_many_large_outlines_is_refused_before_any_is_cut_up(tmp_path, capsys):
     wall = "  - polygon: [" + ", ".join(f"[{math.cos(a / 64 * 6.283) * 5:.4f}, {math.sin(a / 64 * 6.283) * 5:.4f}]"
                                        for a in range(64)) + "]\n"

@@ -43,3 +43,21 @@ def content_roots() -> list[Path]:
     """Every content folder, shipped first; the player's only if it exists."""
     user = user_content_dir()
     return [CONTENT_DIR] + ([user] if user.is_dir() and user.resolve() != CONTENT_DIR.resolve() else [])
+
+
+def named_file(arg: str | Path, folder: str) -> Path:
+    """The content file a command line names: the path itself if it is there; else a bare name
+    (`pile`, `pile.yaml`) in the content folders' `folder` (the player's first), or a path written
+    from the source tree (`content/scenes/pile.yaml`) in the shipped content, as the README writes
+    them; else the path as given (its loader says it is missing)."""
+    path = Path(arg)
+    if path.exists() or path.is_absolute():
+        return path
+    if len(path.parts) == 1:
+        name = path.name if path.suffix in (".yaml", ".yml") else f"{path.name}.yaml"
+        for root in reversed(content_roots()):
+            if (root / folder / name).is_file():
+                return root / folder / name
+    elif path.parts[0] == "content" and CONTENT_DIR.joinpath(*path.parts[1:]).is_file():
+        return CONTENT_DIR.joinpath(*path.parts[1:])
+    return path

@@ -10,12 +10,11 @@ from pathlib import Path
 
 from polygolf.engine.assembly.simulation import Simulation
 from polygolf.engine.assembly.stages import STAGES
-from polygolf.engine.golf.holes import Hole, find_course, load_courses, load_hole, load_hole_file
+from polygolf.engine.golf.holes import Hole, find_course, load_all_courses, load_hole_file
 from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.golf.scenes import build_scene_file
 from polygolf.engine.golf.world import DEFAULT_BALL
-from polygolf.engine.loading.course import load_library
-from polygolf.engine.loading.paths import HOLES_DIR
+from polygolf.engine.loading.paths import named_file
 from polygolf.engine.loading.yamlsource import ContentError, load_yaml
 
 
@@ -38,33 +37,40 @@ def _describe(title: str, sim: Simulation) -> str:
     return "\n".join(lines)
 
 
-def _hole(target: str) -> Hole:
-    """A hole file, COURSE:HOLE (number or id), or a hole id in the shipped content."""
-    path = Path(target)
-    if path.suffix in (".yaml", ".yml"):
-        return load_hole_file(path)  # (with the tiles.yaml beside it, else the shipped library)
-    if ":" in target:
-        course_name, which = target.split(":", 1)
-        holes = find_course(load_courses(), course_name).holes
-        entry = holes[int(which) - 1] if which.isdigit() and len(which) < 5 and 1 <= int(which) <= len(holes) else next(
-            (h for h in holes if getattr(h, "id", None) == which), None)
-        if entry is None:
-            raise KeyError(f"{course_name} has no hole {which[:24]!r}{'…' if len(which) > 24 else ''}")
-        if isinstance(entry, ContentError):
-            raise entry
-        return entry
-    return load_hole(HOLES_DIR / f"{target}.yaml", load_library())
+def _file(target: str) -> Path | None:
+    """The scene or hole file `target` names (`paths.named_file`: a path, or a name in the content
+    folders' scenes/ or holes/); None for COURSE:HOLE."""
+    for folder in ("scenes", "holes"):
+        path = named_file(target, folder)
+        if path.is_file():
+            return path
+    return None if ":" in target or Path(target).suffix not in (".yaml", ".yml") else Path(target)
+
+
+def _course_hole(target: str) -> Hole:
+    """COURSE:HOLE (number or id), of any content folder's courses."""
+    if ":" not in target:
+        raise KeyError(f"no scene or hole {target!r}: give a file, a scene or hole name, or COURSE:HOLE")
+    course_name, which = target.split(":", 1)
+    holes = find_course(load_all_courses()[0], course_name).holes
+    entry = holes[int(which) - 1] if which.isdigit() and len(which) < 5 and 1 <= int(which) <= len(holes) else next(
+        (h for h in holes if getattr(h, "id", None) == which), None)
+    if entry is None:
+        raise KeyError(f"{course_name} has no hole {which[:24]!r}{'…' if len(which) > 24 else ''}")
+    if isinstance(entry, ContentError):
+        raise entry
+    return entry
 
 
 def explain(target: str, preset: str | None = None) -> str:
-    """`target`: a scene file, a hole file, or COURSE:HOLE (hole number or id)."""
-    path = Path(target)
-    if path.suffix in (".yaml", ".yml") and path.exists():
+    """`target`: a scene or hole file or name, or COURSE:HOLE (hole number or id)."""
+    path = _file(target)
+    if path is not None and path.exists():
         data, _ = load_yaml(path)
         if not (isinstance(data, dict) and "tiles" in data):
             with build_scene_file(path, preset) as sim:
                 return _describe(sim.scene_name, sim)
-    hole = _hole(target)
+    hole = load_hole_file(path) if path is not None else _course_hole(target)
     play = HolePlay(hole, DEFAULT_BALL, preset or "balanced")
     try:
         return _describe(f"{hole.spec.name} ({hole.id})", play.sim)

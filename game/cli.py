@@ -12,6 +12,7 @@ their loading screen; `schema`, `explain`, `scores` and `validate` without `--pr
 from __future__ import annotations
 
 import argparse
+import importlib.util
 import json
 import math
 import os
@@ -445,6 +446,11 @@ def _bench_accuracy(args: argparse.Namespace) -> int:
 
     from polygolf.game.tools import accuracy
 
+    missing = [name for name in ("matplotlib", *(() if args.no_progress else ("tqdm",)))
+               if importlib.util.find_spec(name) is None]
+    if missing:  # (said before minutes of sweeping, not after)
+        print(f"polygolf: bench accuracy needs {' and '.join(missing)}: pip install 'polygolf[bench]'", file=sys.stderr)
+        return EXIT_CONTENT
     cases = accuracy.all_cases(args.quick)
     startup.prepare_physics()
     if args.quick:

@@ -85,3 +85,20 @@ def test_a_reader_that_goes_away_is_no_traceback():
     proc.stdout.close()  # gone before the command writes a byte
     err = proc.stderr.read().decode()
     assert proc.wait(timeout=60) == 0 and "Traceback" not in err, err
+
+
+def test_bench_accuracy_without_its_extra_says_so_before_any_work(monkeypatch, tmp_path, capsys):
+    import importlib.util
+
+    from polygolf.game.tools import accuracy
+
+    real = importlib.util.find_spec
+    monkeypatch.setattr(importlib.util, "find_spec", lambda name, *a: None if name in ("matplotlib", "tqdm")
+                        else real(name, *a))
+    monkeypatch.setattr(accuracy, "all_cases", lambda *a: (_ for _ in ()).throw(AssertionError("work began")))
+    assert main(["bench", "accuracy", "--quick", "--out", str(tmp_path)]) == 2
+    assert capsys.readouterr().err == ("polygolf: bench accuracy needs matplotlib and tqdm: "
+                                       "pip install 'polygolf[bench]'\n")
+    assert main(["bench", "accuracy", "--quick", "--no-progress", "--out", str(tmp_path)]) == 2
+    assert "needs matplotlib: pip" in capsys.readouterr().err
+    assert list(tmp_path.iterdir()) == []

@@ -490,7 +490,8 @@ def test_scenes_and_holes_are_found_by_name_from_any_folder(tmp_path, monkeypatc
     assert main(["explain", "nosuch"]) == 2
     assert capsys.readouterr().err.strip() == ("polygolf: no scene or hole 'nosuch': give a file, a scene or hole "
                                                "name, or COURSE:HOLE")
-    (tmp_path / "pile.yaml").write_text("name: mine\nbodies:\n  - {name: b, shape: {regular: 4, radius: 0.1}, position: [0, 0]}\n")
+    (tmp_path / "pile.yaml").write_text("name: mine\nbodies:\n"
+                                        "  - {name: b, shape: {regular: 4, radius: 0.1}, position: [0, 0]}\n")
     # (a file that is there is the one meant)
     assert main(["simulate", "pile.yaml", "--seconds", "0.05"]) == 0
     assert capsys.readouterr().out.startswith("mine: 3 frames")

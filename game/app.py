@@ -82,6 +82,8 @@ def _game_for(course: str | None, hole: int, theme: str | None, shape, only=None
     from polygolf.game.theme import find_theme
 
     game = Game.load()
+    game.hold_saved(*(key for key, given in (("players", players), ("course", True), ("random_seed", seed is not None),
+                                             ("theme", theme), ("shape", shape is not None)) if given))
     if players:
         game.players = list(players)
     if only is not None:
@@ -97,7 +99,7 @@ def _game_for(course: str | None, hole: int, theme: str | None, shape, only=None
     if theme:
         game.theme_index = game.themes.index(find_theme(game.themes, theme))
     if shape is not None:
-        game.set_shape(*(parse_shape(shape) if isinstance(shape, str) else shape))
+        game.shape_label, game.shape = parse_shape(shape) if isinstance(shape, str) else shape
     if not 1 <= hole <= len(game.course.holes):
         raise ValueError(f"{game.course.name} has holes 1 to {len(game.course.holes)}")
     return game

@@ -402,6 +402,9 @@ class Game:
     preview: bool = True  # the dotted line of the shot being aimed, up to its first bounce
     computer_skill: str = "good"  # a key of SKILLS
     golfers: GolferProcess = field(default_factory=GolferProcess)  # the search golfer's process, started on demand
+    # The saved choices this launch's command line overrides (`hold_saved`): written in their place
+    # until the menu makes that choice again.
+    held: dict[str, object] = field(default_factory=dict)
 
     @classmethod
     def load(cls, store: Store | None = None) -> Game:
@@ -455,9 +458,19 @@ class Game:
         self.preview = saved["preview"] if isinstance(saved.get("preview"), bool) else self.preview
         self.computer_skill = _one_of(saved.get("computer_skill"), SKILLS) or self.computer_skill
 
-    def save_settings(self) -> None:
+    def save_settings(self, *chosen: str) -> None:
+        """Write the choices back; `chosen`: the settings the menu just made (no longer held)."""
+        for key in chosen:
+            self.held.pop(key, None)
         if self.store is not None:
-            self.store.save_settings(self.settings())
+            self.store.save_settings(self.settings() | self.held)
+
+    def hold_saved(self, *keys: str) -> None:
+        """The command line is about to choose these settings for this launch only: what is saved
+        for them stays saved (a `render --theme sand` does not change the menu's theme)."""
+        saved = self.settings()
+        for key in keys:
+            self.held.setdefault(key, saved[key])
 
     # -- choices ----------------------------------------------------------------------------------
 
@@ -483,14 +496,14 @@ class Game:
 
     def next_theme(self) -> None:
         self.theme_index = (self.theme_index + 1) % len(self.themes)
-        self.save_settings()
+        self.save_settings("theme")
 
     def next_course(self) -> None:
         """The next course; after the last, Random nine (found in the data folder if built before)."""
         self.course_index = (self.course_index + 1) % (len(self.courses) + 1)
         if self.random_chosen:
             self.random_nine = self._cached_nine()
-        self.save_settings()
+        self.save_settings("course")
 
     def choose_random_nine(self, seed: int | None = None) -> None:
         """Random nine of `seed` (default: the seed chosen last), from the data folder if built before.
@@ -505,7 +518,7 @@ class Game:
         """Another Random nine: a fresh seed (its course is built when it is first played)."""
         self.random_seed = new_seed()
         self.random_nine = self._cached_nine()
-        self.save_settings()
+        self.save_settings("random_seed")
 
     def _cached_nine(self) -> Course | None:
         try:
@@ -517,11 +530,11 @@ class Game:
         labels = [label for label, _ in CATALOGUE]
         i = labels.index(self.shape_label) + 1 if self.shape_label in labels else 0
         self.shape_label, self.shape = CATALOGUE[i % len(CATALOGUE)]
-        self.save_settings()
+        self.save_settings("shape")
 
     def set_shape(self, label: str, shape: ShapeSpec) -> None:
         self.shape_label, self.shape = label, shape
-        self.save_settings()
+        self.save_settings("shape")
 
     def next_player_count(self) -> None:
         """1, 2, 3, 4, 1 ... players (names kept for the seats that stay)."""
@@ -529,27 +542,32 @@ class Game:
         self.players = (self.players + default_names(MAX_PLAYERS))[:count] if count > 1 else self.players[:1]
         self.players = [name if name not in self.players[:k] else f"Player {k + 1}"
                         for k, name in enumerate(self.players)]
-        self.save_settings()
+        self.save_settings("players")
 
     def set_names(self, names: list[str]) -> None:
         """The players' names (their count is the number of players)."""
         self.players = list(names[:MAX_PLAYERS]) or default_names(1)
-        self.save_settings()
+        self.save_settings("players")
 
     def next_hint(self) -> None:
         """Aim hint: off, rough, good, exact, off ..."""
         names = list(HINTS)
         self.hint = names[(names.index(self.hint) + 1) % len(names)]
-        self.save_settings()
+        self.save_settings("hint")
+
+    def next_volume(self) -> None:
+        """The menu's Sound: the next volume step (unmuting), kept for the next launch."""
+        self.sound.next_volume()
+        self.save_settings("volume")
 
     def toggle_preview(self) -> None:
         self.preview = not self.preview
-        self.save_settings()
+        self.save_settings("preview")
 
     def next_computer_skill(self) -> None:
         names = list(SKILLS)
         self.computer_skill = names[(names.index(self.computer_skill) + 1) % len(names)]
-        self.save_settings()
+        self.save_settings("computer_skill")
 
     def close(self) -> None:
         """The game is closing: the round's world and the golfer's process go."""
@@ -559,7 +577,7 @@ class Game:
     def mark_guide_seen(self) -> None:
         if not self.guide_seen:
             self.guide_seen = True
-            self.save_settings()
+            self.save_settings("guide_seen")
 
     # -- rounds -----------------------------------------------------------------------------------
 

@@ -265,6 +265,28 @@ def test_settings_are_kept_between_launches(courses):
         (game.theme.name, game.shape_label, ["Player 1", "Player 2"], True)
 
 
+def test_the_command_lines_choices_are_for_that_launch_and_the_menus_are_kept(courses):
+    """`render --theme sand`, `play --course hazards --shape star-5-2` choose for that launch only:
+    saving another setting keeps what was saved for them, until the menu makes that choice again.
+    The menu's Sound is kept as any other choice (it was written only with the next change)."""
+    from polygolf.game.app import _game_for
+
+    menu = Game.load()
+    menu.next_theme()  # the menu's choices: Night, the second shape, Meadow, one player
+    saved = {key: menu.settings()[key] for key in ("theme", "shape", "course", "players", "volume")}
+    game = _game_for("hazards", 1, "sand", "star-5-2", players=["Ann", "Bob"])
+    assert (game.theme.name, game.shape_label, game.course.id, game.players) == ("Sand", "Star {5/2}", "hazards",
+                                                                                ["Ann", "Bob"])
+    game.toggle_preview()  # another setting, changed in play: written with the saved choices, not these
+    game.next_volume()
+    again = Game.load()
+    assert {key: again.settings()[key] for key in saved} == saved | {"volume": game.sound.volume}
+    assert again.preview is False and game.sound.volume != saved["volume"]
+    game.next_theme()  # the menu chooses again: kept
+    assert Game.load().theme.name == game.theme.name != saved["theme"]
+    assert Game.load().course.id == "meadow"
+
+
 def test_a_corrupted_database_is_set_aside_and_the_round_saved_to_a_fresh_one(capsys):
     db = data_dir() / "polygolf.db"
     assert autoplay() == 0

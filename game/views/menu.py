@@ -253,7 +253,7 @@ class MenuView(UIView):
         return "off" if sound.muted or sound.volume == 0 else f"{round(sound.volume * 100)}%"
 
     def on_volume(self, _event=None) -> None:
-        self.game.sound.next_volume()
+        self.game.next_volume()
         self.build()
 
     def on_hint(self, _event=None) -> None:

@@ -4,12 +4,15 @@ from __future__ import annotations
 
 import threading
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import watchfiles
 
 from polygolf.engine.golf.holes import load_hole_file
 from polygolf.engine.loading.yamlsource import ContentError
-from polygolf.game.flow import ScreenFlow
+
+if TYPE_CHECKING:  # (the watcher itself needs no window: importing the screens imports arcade.gui)
+    from polygolf.game.flow import ScreenFlow
 
 
 class FileWatcher:

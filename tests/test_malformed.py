@@ -510,6 +510,27 @@ def test_explain_finds_the_players_own_courses(content_copy, capsys):
     assert capsys.readouterr().out.startswith("Mine (my-hole) at balanced")
 
 
+@pytest.mark.parametrize(("old", "new", "field"), [
+    ("steep:\n    - {hazard: slope, push: [3.2, 0]", "steep:\n    - {hazard: slope, push: [101, 0]",
+     "patterns.slope-east-steep[0].push[0]"),
+    ("steep:\n    - {hazard: slope, push: [3.2, 0], ", "steep:\n    - {hazard: slope, ",
+     "patterns.slope-east-steep[0]"),
+    ("open-ew: {e: open, w: open}", "open-ew: {e: opn, w: open}", "border_sets.open-ew.e"),
+    ("twin-posts:\n    - box: {center: [0, 1.4], half: [0.4, 0.4]}",
+     "twin-posts:\n    - box: {center: [0, 1.4], half: [0, 0.4]}", "patterns.twin-posts[0].box.half[0]"),
+])
+def test_a_library_error_names_the_pattern_or_border_set_and_its_line(tmp_path, capsys, old, new, field):
+    """Names with a dash (most of the library's) are the user's keys, not pydantic's tags: the error is
+    on the item's own line under its own name (it was put at the section's header, the name left out)."""
+    assert LIBRARY.count(old) == 1
+    text = LIBRARY.replace(old, new)
+    line = text[:text.index(new) + len(new)].count("\n") + 1  # the item's line: the last of `new`
+    (tmp_path / "tiles.yaml").write_text(text)
+    assert main(["validate", str(tmp_path / "tiles.yaml")]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(f"{tmp_path / 'tiles.yaml'}:{line}: {field}: "), err
+
+
 def test_a_file_of_many_large_outlines_is_refused_before_any_is_cut_up(tmp_path, capsys):
     wall = "  - polygon: [" + ", ".join(f"[{math.cos(a / 64 * 6.283) * 5:.4f}, {math.sin(a / 64 * 6.283) * 5:.4f}]"
                                        for a in range(64)) + "]\n"

@@ -229,11 +229,25 @@ def _message(err: dict) -> str:
 _TYPE_TAGS = {"str", "int", "float", "bool", "list", "tuple", "dict", "none", "set"}
 
 
-def _field_path(loc: tuple) -> Loc:
-    """pydantic's error location without its union-branch and validator tags (our fields are
-    snake_case; tags are class names, `type[...]`, `kind-of-check` or a type's name)."""
-    return tuple(p for p in loc if isinstance(p, int) or (p.islower() and "[" not in p and "-" not in p
-                                                          and p not in _TYPE_TAGS))
+def _field_path(loc: tuple, data: Any) -> Loc:
+    """pydantic's error location without its union-branch and validator tags, followed through the
+    data itself: a key or index the data has is part of the path whatever it looks like (a pattern
+    named `slope-east`); one it lacks is a missing field if it looks like ours (snake_case), else a tag
+    (a class name, `type[...]`, `kind-of-check` or a type's name)."""
+    out: list[str | int] = []
+    node = data
+    for part in loc:
+        if isinstance(node, dict) and part in node:
+            node = node[part]
+        elif isinstance(node, list) and isinstance(part, int) and 0 <= part < len(node):
+            node = node[part]
+        elif isinstance(part, int) or (part.islower() and "[" not in part and "-" not in part
+                                       and part not in _TYPE_TAGS):
+            node = None
+        else:
+            continue
+        out.append(part)
+    return tuple(out)
 
 
 def validate(model: type[M], data: Any, lines: dict[Loc, int], file: str | Path) -> M:
@@ -243,7 +257,7 @@ def validate(model: type[M], data: Any, lines: dict[Loc, int], file: str | Path)
     try:
         return model.model_validate(data)
     except ValidationError as exc:
-        found = [(_field_path(err["loc"]), err) for err in exc.errors(include_url=False)]
+        found = [(_field_path(err["loc"], data), err) for err in exc.errors(include_url=False)]
         messages: dict[Loc, list[str]] = {}
         for loc, err in found:
             deeper = any(len(other) > len(loc) and other[:len(loc)] == loc for other, _ in found)

@@ -95,7 +95,7 @@ def _game_for(course: str | None, hole: int, theme: str | None, shape, only=None
     elif not game.courses:
         raise ValueError(game.problems[0] if game.problems else "no course could be read")
     else:
-        game.course_index = game.courses.index(find_course(game.courses, course))
+        game.course_index = game.courses.index(find_course(game.courses, course, game.course_problems))
     if theme:
         game.theme_index = game.themes.index(find_theme(game.themes, theme))
     if shape is not None:

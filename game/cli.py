@@ -340,7 +340,7 @@ def _autoplay(args: argparse.Namespace) -> int:
     elif not game.courses:
         raise ValueError(game.problems[0] if game.problems else "no course could be read")
     else:
-        course = find_course(game.courses, args.course)
+        course = find_course(game.courses, args.course, game.course_problems)
     launched = [k for k, hole in enumerate(course.holes, 1) if isinstance(hole, Hole) and hole.spec.launch is not None]
     if launched:  # its ball is launched again and again: it never rests for a stroke
         raise ValueError(f"{course.name}: hole {launched[0]} launches the ball itself (a collision test); "

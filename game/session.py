@@ -392,6 +392,7 @@ class Game:
     guide_seen: bool = False
     players: list[str] = field(default_factory=lambda: default_names(1))
     problems: list[str] = field(default_factory=list)  # content that could not be read, for the menu
+    course_problems: list[str] = field(default_factory=list)  # of those, the courses files' (`find_course`)
     store: Store | None = None
     session: RoundPlay | None = None
     record_rounds: bool = True  # False: practice (a hole file being edited): nothing saved
@@ -413,6 +414,7 @@ class Game:
         courses, course_problems = load_all_courses()
         themes, theme_problems = load_themes()
         game = cls(courses=courses, themes=themes, problems=[str(p) for p in course_problems + theme_problems],
+                   course_problems=[str(p) for p in course_problems],
                    store=store if store is not None else Store())
         game.apply_settings(game.store.load_settings())
         return game

@@ -426,6 +426,28 @@ def test_a_theme_may_not_take_another_themes_name(content_copy, capsys):
     assert "Dusk" in [t.name for t in load_themes()[0]]
 
 
+def test_a_course_in_a_courses_file_that_cannot_be_read_says_why(content_copy, tmp_path, capsys):
+    """The menu shows a broken courses file's line; the command line, asked for one of its courses,
+    said only that there was no such course."""
+    from polygolf.engine.loading.paths import user_content_dir
+
+    mine = user_content_dir() / "holes"
+    mine.mkdir(parents=True)
+    (mine / "courses.yaml").write_text("courses:\n  - name: Mine\n    holes: [../my-hole]\n")
+    assert main(["render", "mine", "1", "--out", str(tmp_path / "x.png")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("polygolf: no course 'mine'; courses: meadow, ") \
+        and f"; not read: {mine / 'courses.yaml'}:3: courses[0].holes[0]: " in err[0], err
+
+
+def test_a_hole_is_named_by_its_course_and_number_or_id_everywhere():
+    from polygolf.engine.golf.scenes import find_hole
+
+    assert find_hole("meadow:dog-leg", Path.cwd()).id == "dog-leg" == find_hole("meadow:2", Path.cwd()).id
+    with pytest.raises(KeyError, match=r"meadow has holes 1 to 9 \(or give a hole's name: straight, dog-leg, "):
+        find_hole("meadow:nosuch", Path.cwd())
+
+
 def test_a_link_to_itself_beside_a_watched_hole_does_not_end_the_watching(tmp_path):
     from polygolf.game.watch import FileWatcher
 

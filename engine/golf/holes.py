@@ -4,7 +4,7 @@ checked (reachable cup, clear tee and cup), and courses of such holes with broke
 from __future__ import annotations
 
 import math
-from collections.abc import Collection
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -153,8 +153,11 @@ def load_all_courses() -> tuple[list[Course], list[ContentError]]:
     return courses, problems
 
 
-def find_course(courses: list[Course], name: str) -> Course:
+def find_course(courses: list[Course], name: str, unread: Sequence[object] = ()) -> Course:
+    """The course of that id or name. `unread`: the problems of the courses files that could not be
+    read (`load_all_courses`): the one asked for may be in one, so the error says why."""
     for course in courses:
         if name in (course.id, course.name):
             return course
-    raise KeyError(f"no course {name!r}; courses: {', '.join(c.id for c in courses)}")
+    raise KeyError(f"no course {name!r}; courses: {', '.join(c.id for c in courses)}"
+                   + "".join(f"; not read: {problem}" for problem in unread))

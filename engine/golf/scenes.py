@@ -19,13 +19,19 @@ from polygolf.engine.physics.presets import Knobs
 
 
 def find_hole(name: str, beside: Path) -> Hole:
-    """COURSE:N (a hole number of a course), or a hole file (relative to `beside`)."""
+    """COURSE:N or COURSE:ID (a hole of any content folder's course, by its number or its file's
+    name), or a hole file (relative to `beside`)."""
     if ":" in name:
-        course_name, number = name.split(":", 1)
-        holes = find_course(load_all_courses()[0], course_name).holes
-        if not (number.isdigit() and 1 <= int(number) <= len(holes)):
-            raise KeyError(f"{course_name} has holes 1 to {len(holes)}")
-        hole = holes[int(number) - 1]
+        course_name, which = name.split(":", 1)
+        courses, unread = load_all_courses()
+        holes = find_course(courses, course_name, unread).holes
+        if which.isdigit() and len(which) < 5 and 1 <= int(which) <= len(holes):
+            hole = holes[int(which) - 1]
+        else:
+            hole = next((h for h in holes if isinstance(h, Hole) and h.id == which), None)
+            if hole is None:
+                raise KeyError(f"{course_name} has holes 1 to {len(holes)} (or give a hole's name: "
+                               f"{', '.join(h.id for h in holes if isinstance(h, Hole))})")
         if isinstance(hole, ContentError):
             raise hole
         return hole

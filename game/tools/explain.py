@@ -10,12 +10,12 @@ from pathlib import Path
 
 from polygolf.engine.assembly.simulation import Simulation
 from polygolf.engine.assembly.stages import STAGES
-from polygolf.engine.golf.holes import Hole, find_course, load_all_courses, load_hole_file
+from polygolf.engine.golf.holes import load_hole_file
 from polygolf.engine.golf.play import HolePlay
-from polygolf.engine.golf.scenes import build_scene_file
+from polygolf.engine.golf.scenes import build_scene_file, find_hole
 from polygolf.engine.golf.world import DEFAULT_BALL
 from polygolf.engine.loading.paths import named_file
-from polygolf.engine.loading.yamlsource import ContentError, load_yaml
+from polygolf.engine.loading.yamlsource import load_yaml
 
 
 def _describe(title: str, sim: Simulation) -> str:
@@ -47,21 +47,6 @@ def _file(target: str) -> Path | None:
     return None if ":" in target or Path(target).suffix not in (".yaml", ".yml") else Path(target)
 
 
-def _course_hole(target: str) -> Hole:
-    """COURSE:HOLE (number or id), of any content folder's courses."""
-    if ":" not in target:
-        raise KeyError(f"no scene or hole {target!r}: give a file, a scene or hole name, or COURSE:HOLE")
-    course_name, which = target.split(":", 1)
-    holes = find_course(load_all_courses()[0], course_name).holes
-    entry = holes[int(which) - 1] if which.isdigit() and len(which) < 5 and 1 <= int(which) <= len(holes) else next(
-        (h for h in holes if getattr(h, "id", None) == which), None)
-    if entry is None:
-        raise KeyError(f"{course_name} has no hole {which[:24]!r}{'…' if len(which) > 24 else ''}")
-    if isinstance(entry, ContentError):
-        raise entry
-    return entry
-
-
 def explain(target: str, preset: str | None = None) -> str:
     """`target`: a scene or hole file or name, or COURSE:HOLE (hole number or id)."""
     path = _file(target)
@@ -70,7 +55,9 @@ def explain(target: str, preset: str | None = None) -> str:
         if not (isinstance(data, dict) and "tiles" in data):
             with build_scene_file(path, preset) as sim:
                 return _describe(sim.scene_name, sim)
-    hole = load_hole_file(path) if path is not None else _course_hole(target)
+    if path is None and ":" not in target:
+        raise KeyError(f"no scene or hole {target!r}: give a file, a scene or hole name, or COURSE:HOLE")
+    hole = load_hole_file(path) if path is not None else find_hole(target, Path.cwd())
     play = HolePlay(hole, DEFAULT_BALL, preset or "balanced")
     try:
         return _describe(f"{hole.spec.name} ({hole.id})", play.sim)

@@ -20,7 +20,8 @@ def holes_named(target: str) -> tuple[list[Hole], list[ContentError]]:
     """A course (its id or name), COURSE:N, or a hole file: the holes to prove, and broken ones."""
     if target.endswith((".yaml", ".yml")) or os.sep in target or ":" in target:
         return ([load_hole_file(target)] if Path(target).exists() else [find_hole(target, Path.cwd())]), []
-    course = find_course(load_all_courses()[0], target)
+    courses, unread = load_all_courses()
+    course = find_course(courses, target, unread)
     return course.playable, [h for h in course.holes if isinstance(h, ContentError)]
 
 

@@ -448,6 +448,12 @@ def test_a_hole_is_named_by_its_course_and_number_or_id_everywhere():
         find_hole("meadow:nosuch", Path.cwd())
 
 
+def test_a_hole_of_one_tile_is_refused_its_tee_would_be_in_the_cup(tmp_path, capsys):
+    (tmp_path / "one.yaml").write_text("name: One\npar: 1\ntiles:\n  - {at: [0, 0]}\n")
+    assert main(["validate", str(tmp_path / "one.yaml")]) == 1
+    assert capsys.readouterr().err.startswith(f"{tmp_path / 'one.yaml'}:3: tiles: a hole needs two tiles or more")
+
+
 def test_a_link_to_itself_beside_a_watched_hole_does_not_end_the_watching(tmp_path):
     from polygolf.game.watch import FileWatcher
 

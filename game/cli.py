@@ -199,13 +199,15 @@ def _prove_warnings(paths, broken: set[str]) -> list[str]:
     """`validate --prove`: each valid hole file proven by the search golfer; its doubts as warnings."""
     from polygolf.engine.golf.holes import load_hole_file
     from polygolf.engine.loading.yamlsource import line_of, load_yaml
-    from polygolf.game.tools.par import prove_all, warnings_for
+    from polygolf.game.tools.par import launches, prove_all, warnings_for
     from polygolf.game.tools.validate import _kind, content_files
 
     files = [f for f in content_files(paths) if _kind(f) == "hole" and str(f) not in broken]
+    holes = {f: load_hole_file(f) for f in files}
+    files = [f for f in files if not launches(holes[f])]  # (nobody plays a collision test: no par to prove)
     if files:
         startup.prepare_physics()
-    proofs = prove_all([load_hole_file(f) for f in files])
+    proofs = prove_all([holes[f] for f in files])
     out = []
     for path, proof in zip(files, proofs):
         line = line_of(("par",), load_yaml(path)[1])
@@ -217,8 +219,8 @@ def _par(args: argparse.Namespace) -> int:
     """The search golfer proves each hole and estimates its par; exit 1 if any hole is in doubt."""
     from polygolf.game.tools.par import holes_named, prove_all, table, warnings_for
 
-    holes, broken = holes_named(args.target)
-    for problem in broken:
+    holes, broken, passed_over = holes_named(args.target)
+    for problem in [*broken, *passed_over]:
         print(f"polygolf: skipped: {problem}", file=sys.stderr)
     tty = sys.stderr.isatty() and not args.json
     if holes:
@@ -233,7 +235,7 @@ def _par(args: argparse.Namespace) -> int:
         print(json.dumps([p.row() | {"strokes": p.strokes, "seconds": round(p.seconds, 3), "shots": p.shots}
                           for p in proofs]))
     else:
-        print(table(proofs))
+        print(table(proofs) if proofs else "nothing to prove")
     doubts = [f"{p.hole}: {text}" for p in proofs for text in warnings_for(p)]
     for doubt in doubts:
         print(f"polygolf: {doubt}", file=sys.stderr)
@@ -330,6 +332,7 @@ def _autoplay(args: argparse.Namespace) -> int:
     from polygolf.game.app import build_nine_here
     from polygolf.game.golfer_process import SEARCH_EFFORT, Question, answer, origin_of
     from polygolf.game.session import RANDOM_NINE, Game, par_text, strokes_text
+    from polygolf.game.tools.par import LAUNCHES, launches
 
     game = Game.load()
     if args.seed is not None and args.course != RANDOM_NINE:
@@ -341,10 +344,9 @@ def _autoplay(args: argparse.Namespace) -> int:
         raise ValueError(game.problems[0] if game.problems else "no course could be read")
     else:
         course = find_course(game.courses, args.course, game.course_problems)
-    launched = [k for k, hole in enumerate(course.holes, 1) if isinstance(hole, Hole) and hole.spec.launch is not None]
-    if launched:  # its ball is launched again and again: it never rests for a stroke
-        raise ValueError(f"{course.name}: hole {launched[0]} launches the ball itself (a collision test); "
-                         "the golfer cannot play it")
+    launched = [k for k, hole in enumerate(course.holes, 1) if isinstance(hole, Hole) and launches(hole)]
+    if launched:
+        raise ValueError(f"{course.name}: hole {launched[0]} {LAUNCHES}")
     game.courses, game.course_index = [course], 0  # this round's course, not saved as the menu's choice
     game.players = player_names(args.players, args.names) or ["Golfer"]
     if args.shape is not None:

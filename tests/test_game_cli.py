@@ -102,3 +102,15 @@ def test_bench_accuracy_without_its_extra_says_so_before_any_work(monkeypatch, t
     assert main(["bench", "accuracy", "--quick", "--no-progress", "--out", str(tmp_path)]) == 2
     assert "needs matplotlib: pip" in capsys.readouterr().err
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_collision_test_is_not_proven_the_golfer_cannot_play_it(capsys):
+    """Its ball is launched again and again: `par` says it passes it over, `validate --prove` has no
+    doubt to report of it (it warned that the shipped hole could not be sunk)."""
+    assert main(["par", "collision-test"]) == 0
+    out, err = capsys.readouterr()
+    assert out == "nothing to prove\n"
+    assert err == ("polygolf: skipped: collision-test: launches the ball itself (a collision test): the golfer "
+                   "cannot play it\n")
+    assert main(["validate", "--prove", str(ROOT_SCENES.parent / "holes" / "collision-test.yaml")]) == 0
+    assert capsys.readouterr().out == "1 file checked, 0 problems, 0 warnings\n"

@@ -16,13 +16,24 @@ from polygolf.engine.loading.yamlsource import ContentError
 PAR_SLACK = 1  # strokes the declared par may differ from the estimate before a warning
 
 
-def holes_named(target: str) -> tuple[list[Hole], list[ContentError]]:
-    """A course (its id or name), COURSE:N, or a hole file: the holes to prove, and broken ones."""
+def holes_named(target: str) -> tuple[list[Hole], list[ContentError], list[str]]:
+    """A course (its id or name), COURSE:N, or a hole file: the holes to prove, the broken ones, and
+    why the others are passed over (a collision test launches its ball itself: nobody plays it)."""
     if target.endswith((".yaml", ".yml")) or os.sep in target or ":" in target:
-        return ([load_hole_file(target)] if Path(target).exists() else [find_hole(target, Path.cwd())]), []
-    courses, unread = load_all_courses()
-    course = find_course(courses, target, unread)
-    return course.playable, [h for h in course.holes if isinstance(h, ContentError)]
+        holes, broken = [load_hole_file(target) if Path(target).exists() else find_hole(target, Path.cwd())], []
+    else:
+        courses, unread = load_all_courses()
+        course = find_course(courses, target, unread)
+        holes, broken = course.playable, [h for h in course.holes if isinstance(h, ContentError)]
+    return [h for h in holes if not launches(h)], broken, [f"{h.id}: {LAUNCHES}" for h in holes if launches(h)]
+
+
+LAUNCHES = "launches the ball itself (a collision test): the golfer cannot play it"
+
+
+def launches(hole: Hole) -> bool:
+    """Whether the hole launches its ball again and again (it never rests for a stroke)."""
+    return hole.spec.launch is not None
 
 
 def _prove(job: tuple[Hole, str, str]) -> HoleProof:

@@ -93,7 +93,7 @@ def player_names(players: int | None, names: list[str] | None) -> list[str] | No
     from polygolf.game.session import default_names
 
     if names is not None and players is not None and len(names) != players:
-        raise ValueError(f"--names gives {len(names)} names for --players {players}")
+        raise ValueError(f"--names gives {len(names)} name{'s' if len(names) != 1 else ''} for --players {players}")
     if names is not None:
         return names
     return default_names(players) if players is not None else None
@@ -264,7 +264,14 @@ def _play(args: argparse.Namespace) -> int:
     from polygolf.game.app import run_hole_file, run_play
 
     if args.file is not None:
+        course_options = [f"--{name}" for name in ("course", "hole", "players", "names", "seed")
+                          if getattr(args, name) is not None]
+        if course_options:
+            print(f"polygolf: {', '.join(course_options)}: a hole file is played alone, by one player (they are for "
+                  "a course)", file=sys.stderr)
+            return EXIT_CONTENT
         return _window(run_hole_file, args.file, args.theme, args.shape, args.preset, args.watch)
+    args.course, args.hole = args.course or "meadow", 1 if args.hole is None else args.hole
     if args.watch:
         print("polygolf: --watch needs a hole file: polygolf play FILE.yaml --watch", file=sys.stderr)
         return EXIT_CONTENT
@@ -381,7 +388,8 @@ def _scores(args: argparse.Namespace) -> int:
     from polygolf.game.store import Store
 
     store = Store()
-    bests = store.bests(args.course)
+    # A course's id is its name in lower case, spaces as dashes: `--course "Meadow"` means meadow.
+    bests = store.bests(args.course and args.course.lower().replace(" ", "-"))
     if args.json:
         print(json.dumps([{"course": b.course, "hole": b.hole, "number": None if b.position is None else b.position + 1,
                            "name": b.name, "shape": b.shape, "strokes": b.strokes, "par": b.par, "player": b.player,
@@ -514,8 +522,8 @@ def build_parser() -> argparse.ArgumentParser:
     play = sub.add_parser("play", help="play a hole of a course, or a hole file, straight away")
     play.add_argument("file", nargs="?", type=Path, default=None, help="a hole file to play on its own")
     play.add_argument("--watch", action="store_true", help="with a hole file: build it again each time it is saved")
-    play.add_argument("--course", default="meadow", help="course name (default meadow)")
-    play.add_argument("--hole", type=int, default=1, help="hole number (default 1)")
+    play.add_argument("--course", default=None, help="course name (default meadow)")
+    play.add_argument("--hole", type=int, default=None, help="hole number (default 1)")
     play.add_argument("--theme", default=None, help="grass, sand, night ...")
     play.add_argument("--shape", type=shape_arg, default=None, help="pentagon, star-5-2, 7 (sides), random-SEED ...")
     play.add_argument("--preset", choices=list(PRESETS), default="balanced")

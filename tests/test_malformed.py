@@ -454,6 +454,13 @@ def test_a_hole_of_one_tile_is_refused_its_tee_would_be_in_the_cup(tmp_path, cap
     assert capsys.readouterr().err.startswith(f"{tmp_path / 'one.yaml'}:3: tiles: a hole needs two tiles or more")
 
 
+@pytest.mark.parametrize("extra", [["--course", "hazards"], ["--hole", "3"], ["--players", "2"], ["--seed", "4"]])
+def test_a_hole_file_played_with_course_options_says_they_are_not_for_it(extra, capsys):
+    assert main(["play", str(HOLES_DIR / "straight.yaml"), *extra]) == 2
+    assert capsys.readouterr().err == (f"polygolf: {extra[0]}: a hole file is played alone, by one player "
+                                       "(they are for a course)\n")
+
+
 def test_a_link_to_itself_beside_a_watched_hole_does_not_end_the_watching(tmp_path):
     from polygolf.game.watch import FileWatcher
 

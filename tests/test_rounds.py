@@ -178,6 +178,8 @@ def test_autoplay_saves_the_round_bests_and_a_replay_that_verifies(capsys):
     assert main(["scores", "--course", "sandbox"]) == 0
     lines = capsys.readouterr().out.splitlines()
     assert len(lines) == 4 and lines[-1].startswith("sandbox course (Sandbox)")
+    assert main(["scores", "--course", "Sandbox"]) == 0  # the course's name, as the menu shows it
+    assert capsys.readouterr().out.splitlines() == lines
     assert f"{strokes_text(course[0]['strokes'])}, par {course[0]['par']}" in lines[-1]
     assert main(["replay", str(replays[0]), "--verify"]) == 0
     assert "verified: 3 of 3 holes" in capsys.readouterr().out
@@ -246,7 +248,8 @@ def test_a_replay_is_saved_whatever_its_course_is_called(tmp_path):
 
 
 @pytest.mark.parametrize("args", [["--players", "5"], ["--players", "two"], ["--players", "0"],
-                                  ["--names", "Ann,Ann"], ["--players", "3", "--names", "Ann,Bob"]])
+                                  ["--names", "Ann,Ann"], ["--players", "3", "--names", "Ann,Bob"],
+                                  ["--players", "2", "--names", "Ann"]])
 def test_bad_player_arguments_are_one_line_and_status_2(args, capsys):
     assert autoplay(*args) == 2
     err = capsys.readouterr().err.strip().splitlines()

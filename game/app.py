@@ -82,8 +82,6 @@ def _game_for(course: str | None, hole: int, theme: str | None, shape, only=None
     from polygolf.game.theme import find_theme
 
     game = Game.load()
-    game.hold_saved(*(key for key, given in (("players", players), ("course", True), ("random_seed", seed is not None),
-                                             ("theme", theme), ("shape", shape is not None)) if given))
     if players:
         game.players = list(players)
     if only is not None:

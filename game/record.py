@@ -10,7 +10,9 @@ from __future__ import annotations
 import hashlib
 import json
 import math
+import os
 import re
+import tempfile
 from pathlib import Path
 from typing import Annotated, Literal
 
@@ -84,20 +86,36 @@ class RoundRecord(_Strict):
     holes: list[HoleRecord] = []
 
     def save(self, folder: Path) -> Path:
-        """Write the record as `folder/<recorded_at>-<course>.json` (atomically: a temporary file
-        renamed), and return the path. The course id is made safe for a file name (a course's name
-        may hold '/' or be long), so no round is lost for its name; the file itself says the course."""
+        """Write the record as `folder/<recorded_at>-<course>.json` (or `-2`, `-3` ... after it, when
+        another round of that second has the name), and return the path. The name is taken with an
+        exclusive create, so two games saving at once never share one, and the text goes in by a
+        temporary file of this process's renamed over it, so no reader sees half of it. The course id
+        is made safe for a file name (a course's name may hold '/' or be long), so no round is lost
+        for its name; the file itself says the course."""
         folder.mkdir(parents=True, exist_ok=True)
+        text = json.dumps(self.model_dump(mode="json"), indent=1)
         stamp = _file_safe(self.recorded_at.replace(":", "").replace("-", ""))
         course = _file_safe(self.course)[:MAX_FILE_COURSE] or "_"
-        path = folder / f"{stamp}-{course}.json"
         n = 1
-        while path.exists():
-            n += 1
-            path = folder / f"{stamp}-{course}-{n}.json"
-        tmp = path.with_suffix(".tmp")
-        tmp.write_text(json.dumps(self.model_dump(mode="json"), indent=1))
-        tmp.replace(path)
+        while True:
+            path = folder / (f"{stamp}-{course}.json" if n == 1 else f"{stamp}-{course}-{n}.json")
+            try:
+                path.open("x").close()  # this round's name now: no other process takes it
+                break
+            except FileExistsError:
+                n += 1
+        try:
+            handle, tmp = tempfile.mkstemp(dir=folder, prefix=f".{path.stem}-", suffix=".tmp")
+            try:
+                with os.fdopen(handle, "w", encoding="utf-8") as out:
+                    out.write(text)
+                os.replace(tmp, path)
+            except BaseException:
+                Path(tmp).unlink(missing_ok=True)
+                raise
+        except BaseException:
+            path.unlink(missing_ok=True)  # (not a replay: the name goes back)
+            raise
         return path
 
 

@@ -403,9 +403,6 @@ class Game:
     preview: bool = True  # the dotted line of the shot being aimed, up to its first bounce
     computer_skill: str = "good"  # a key of SKILLS
     golfers: GolferProcess = field(default_factory=GolferProcess)  # the search golfer's process, started on demand
-    # The saved choices this launch's command line overrides (`hold_saved`): written in their place
-    # until the menu makes that choice again.
-    held: dict[str, object] = field(default_factory=dict)
 
     @classmethod
     def load(cls, store: Store | None = None) -> Game:
@@ -461,18 +458,12 @@ class Game:
         self.computer_skill = _one_of(saved.get("computer_skill"), SKILLS) or self.computer_skill
 
     def save_settings(self, *chosen: str) -> None:
-        """Write the choices back; `chosen`: the settings the menu just made (no longer held)."""
-        for key in chosen:
-            self.held.pop(key, None)
+        """Write back the settings the menu just chose, those alone: what the command line chose for
+        this launch is not written (`render --theme sand` keeps the menu's theme), nor is what another
+        game window open at the same time chose since this one started."""
         if self.store is not None:
-            self.store.save_settings(self.settings() | self.held)
-
-    def hold_saved(self, *keys: str) -> None:
-        """The command line is about to choose these settings for this launch only: what is saved
-        for them stays saved (a `render --theme sand` does not change the menu's theme)."""
-        saved = self.settings()
-        for key in keys:
-            self.held.setdefault(key, saved[key])
+            settings = self.settings()
+            self.store.save_settings({key: settings[key] for key in chosen})
 
     # -- choices ----------------------------------------------------------------------------------
 

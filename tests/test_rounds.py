@@ -8,6 +8,7 @@ import json
 import math
 import re
 import sqlite3
+from pathlib import Path
 
 import esper
 import pytest
@@ -235,6 +236,35 @@ def test_a_replay_of_json_no_round_holds_is_not_a_replay(tmp_path, capsys, text)
     assert len(err) == 1 and err[0].startswith(f"polygolf: {path}: not a replay ("), err
 
 
+def _save_replays(folder: Path, player: str, start, count: int, out) -> None:
+    """(A process of the test below.) `count` rounds of one second and course saved by `player`."""
+    start.wait()
+    for _ in range(count):
+        record = RoundRecord(recorded_at="2026-11-26T14:50:44", course="sandbox", course_name="Sandbox",
+                             fingerprint="f", shape_label="Pentagon", shape=PENTAGON, preset="fast", players=[player])
+        out.put(str(record.save(folder)))
+
+
+def test_two_games_saving_replays_at_once_never_share_a_file(tmp_path):
+    """Two games on one machine, rounds started in the same second on the same course: each save has
+    a file of its own with its own round (one had overwritten the other's, or failed on the shared
+    temporary file)."""
+    import multiprocessing
+
+    context = multiprocessing.get_context("fork")
+    start, out = context.Barrier(2), context.Queue()
+    workers = [context.Process(target=_save_replays, args=(tmp_path, name, start, 60, out)) for name in ("Ann", "Bob")]
+    for worker in workers:
+        worker.start()
+    paths = [out.get(timeout=60) for _ in range(120)]
+    for worker in workers:
+        worker.join(timeout=60)
+    assert len(set(paths)) == 120
+    players = sorted(load_record(Path(path)).players[0] for path in paths)
+    assert players == ["Ann"] * 60 + ["Bob"] * 60
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(Path(path).name for path in paths)  # no .tmp left
+
+
 def test_a_replay_is_saved_whatever_its_course_is_called(tmp_path):
     """A course id is its name: '/' or a long name must not cost the round its replay file."""
     saved = []
@@ -288,6 +318,20 @@ def test_the_command_lines_choices_are_for_that_launch_and_the_menus_are_kept(co
     game.next_theme()  # the menu chooses again: kept
     assert Game.load().theme.name == game.theme.name != saved["theme"]
     assert Game.load().course.id == "meadow"
+
+
+def test_two_game_windows_keep_each_others_choices(courses):
+    """Each choice writes itself alone: a second window's click does not put back the first
+    window's old choices (every change wrote all of a window's settings)."""
+    first, second = Game.load(), Game.load()
+    first.next_theme()
+    first.next_volume()
+    second.next_hint()
+    second.next_player_count()
+    again = Game.load()
+    assert (again.theme.name, again.sound.volume) == (first.theme.name, first.sound.volume) != \
+        (second.theme.name, second.sound.volume)
+    assert (again.hint, again.players) == (second.hint, second.players) != (first.hint, first.players)
 
 
 def test_a_corrupted_database_is_set_aside_and_the_round_saved_to_a_fresh_one(capsys):

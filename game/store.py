@@ -21,6 +21,8 @@ import json
 import sqlite3
 import sys
 import time
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -28,7 +30,7 @@ from polygolf.engine.loading.paths import data_dir
 
 DB_NAME = "polygolf.db"
 SCHEMA_VERSION = 1
-LOCK_TIMEOUT = 0.5  # s to wait for another process's write before giving up on this one
+LOCK_TIMEOUT = 2.0  # s to wait for another process's write before giving up on this one
 
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);
@@ -71,6 +73,25 @@ ROUND_TYPES = {"r.course": "text", "r.course_name": "text", "r.shape": "text", "
                "c.par": "integer", "c.name": "text", "r.finished_at": "text"}
 
 
+@contextmanager
+def _locked(path: Path) -> Iterator[None]:
+    """An exclusive lock on `path` (made if need be) between processes, for as long as the block runs
+    (where the platform has no `fcntl`, or the file cannot be made, none: the block runs as it is)."""
+    try:
+        import fcntl
+
+        handle = path.open("a")
+    except (ImportError, OSError):  # (no lock to take: a folder that refuses the file refuses the move too)
+        yield
+        return
+    with handle:
+        fcntl.flock(handle, fcntl.LOCK_EX)
+        try:
+            yield
+        finally:
+            fcntl.flock(handle, fcntl.LOCK_UN)
+
+
 def _not_a_folder(folder: Path) -> str | None:
     """'X is a file, not a folder' when the data folder or one above it is a file (else None)."""
     for place in (folder, *folder.parents):
@@ -108,13 +129,14 @@ class Store:
 
     # -- connection -------------------------------------------------------------------------------
 
-    def _connect(self) -> sqlite3.Connection:
-        """A connection inside a write transaction (BEGIN IMMEDIATE: a lock is taken now or never)."""
+    def _connect(self, write: bool) -> sqlite3.Connection:
+        """A connection inside a transaction: a write one (BEGIN IMMEDIATE: the lock is taken now or
+        never), or a read one, which does not keep another game's writes waiting."""
         self.folder.mkdir(parents=True, exist_ok=True)
         db = sqlite3.connect(self.path, timeout=LOCK_TIMEOUT, isolation_level=None)
         try:
             db.executescript(SCHEMA)
-            db.execute("BEGIN IMMEDIATE")
+            db.execute("BEGIN IMMEDIATE" if write else "BEGIN")
             row = db.execute("SELECT value FROM meta WHERE key = 'schema'").fetchone()
             if row is None:
                 db.execute("INSERT INTO meta VALUES ('schema', ?)", (str(SCHEMA_VERSION),))
@@ -126,29 +148,44 @@ class Store:
             raise
         return db
 
-    def _set_aside(self, why: str) -> None:
-        stamp = time.strftime("%Y%m%d-%H%M%S")
-        target = self.path.with_name(f"{DB_NAME}.corrupt-{stamp}")
-        n = 1
-        while target.exists():
-            n += 1
-            target = self.path.with_name(f"{DB_NAME}.corrupt-{stamp}-{n}")
+    def _identity(self) -> tuple[int, int] | None:
+        """Which file the database is now (device and inode), None if there is none."""
         try:
-            self.path.rename(target)
-        except OSError as exc:
-            self.warn(f"{self.path} is damaged ({why}) and cannot be set aside ({exc.strerror}); nothing saved")
-            raise
-        for suffix in ("-journal", "-wal", "-shm"):
-            self.path.with_name(DB_NAME + suffix).unlink(missing_ok=True)
+            found = self.path.stat()
+        except OSError:
+            return None
+        return found.st_dev, found.st_ino
+
+    def _set_aside(self, why: str, damaged: tuple[int, int] | None) -> None:
+        """Set the damaged file aside, if it is still the one at the database's path: another game may
+        have found it damaged at the same time, set it aside first and begun a fresh one, which is not
+        to be set aside in its turn (the lock file makes the look and the move one step for both)."""
+        with _locked(self.path.with_name(DB_NAME + ".lock")):
+            if damaged is None or self._identity() != damaged:
+                return  # (gone already, or another game's fresh one: the work is tried again on it)
+            stamp = time.strftime("%Y%m%d-%H%M%S")
+            target = self.path.with_name(f"{DB_NAME}.corrupt-{stamp}")
+            n = 1
+            while target.exists():
+                n += 1
+                target = self.path.with_name(f"{DB_NAME}.corrupt-{stamp}-{n}")
+            try:
+                self.path.rename(target)
+            except OSError as exc:
+                self.warn(f"{self.path} is damaged ({why}) and cannot be set aside ({exc.strerror}); nothing saved")
+                raise
+            for suffix in ("-journal", "-wal", "-shm"):  # (the damaged file's: no fresh one is begun yet)
+                self.path.with_name(DB_NAME + suffix).unlink(missing_ok=True)
         self.warn(f"{self.path} was damaged ({why}); kept as {target.name}, starting a fresh one")
 
-    def _transaction(self, work, default, what: str):
-        """Run `work(db)` in one transaction; on trouble warn once and return `default`. A damaged file
-        is set aside and the work tried once more on a fresh one."""
+    def _transaction(self, work, default, what: str, write: bool = True):
+        """Run `work(db)` in one transaction (`write`: one that writes); on trouble warn once and return
+        `default`. A damaged file is set aside and the work tried once more on a fresh one."""
         for attempt in (1, 2):
             damage = None
+            opened = self._identity()
             try:
-                db = self._connect()
+                db = self._connect(write)
             except sqlite3.OperationalError as exc:  # locked, unwritable folder or file
                 self.warn(f"cannot {what}: {self.path}: {exc}")
                 return default
@@ -181,7 +218,7 @@ class Store:
                 self.warn(f"cannot {what}: {self.path} is damaged ({damage})")
                 return default
             try:
-                self._set_aside(str(damage))
+                self._set_aside(str(damage), opened)
             except OSError:
                 return default
         return default
@@ -198,7 +235,7 @@ class Store:
                     continue  # one unreadable setting falls back to its default
             return out
 
-        return self._transaction(work, {}, "read the settings")
+        return self._transaction(work, {}, "read the settings", write=False)
 
     def save_settings(self, settings: dict[str, object]) -> bool:
         def work(db: sqlite3.Connection) -> bool:
@@ -267,7 +304,7 @@ class Store:
                     out.append(Best(row[0], None, None, row[1], row[2], row[3], row[4], row[5], row[6]))
             return out
 
-        return self._transaction(work, [], "read the bests")
+        return self._transaction(work, [], "read the bests", write=False)
 
     def best_hole(self, course: str, hole: str, shape: str) -> Best | None:
         return next((b for b in self.bests(course, shape) if b.hole == hole), None)
@@ -277,4 +314,4 @@ class Store:
 
     def round_count(self) -> int:
         return self._transaction(lambda db: db.execute("SELECT COUNT(*) FROM rounds").fetchone()[0], 0,
-                                 "count the rounds")
+                                 "count the rounds", write=False)

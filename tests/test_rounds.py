@@ -334,6 +334,41 @@ def test_two_game_windows_keep_each_others_choices(courses):
     assert (again.hint, again.players) == (second.hint, second.players) != (first.hint, first.players)
 
 
+def _save_on_damaged(key: str, folder: Path, start, runs: int, out) -> None:
+    """(A process of the test below.) A setting saved in each run's folder as soon as both are ready."""
+    for run in range(runs):
+        start.wait()
+        store = Store(folder / f"run{run}", echo=False)
+        out.put((key, run, store.save_settings({key: run})))
+
+
+def test_two_games_meeting_one_damaged_database_set_it_aside_once_and_both_save(tmp_path):
+    """Two games started together on a damaged database: it is set aside once, the fresh one one of
+    them makes is not set aside by the other, and both saves are in it (the second game renamed the
+    first's fresh database away as damaged, or found nothing to move and saved nothing)."""
+    import multiprocessing
+
+    runs = 40
+    for run in range(runs):
+        (tmp_path / f"run{run}").mkdir()
+        (tmp_path / f"run{run}" / "polygolf.db").write_bytes(b"this is not a database\n" * 200)
+    context = multiprocessing.get_context("fork")
+    start, out = context.Barrier(2), context.Queue()
+    workers = [context.Process(target=_save_on_damaged, args=(key, tmp_path, start, runs, out)) for key in ("a", "b")]
+    for worker in workers:
+        worker.start()
+    saved = [out.get(timeout=120) for _ in range(2 * runs)]
+    for worker in workers:
+        worker.join(timeout=60)
+    assert all(ok for _, _, ok in saved)
+    for run in range(runs):
+        folder = tmp_path / f"run{run}"
+        with sqlite3.connect(folder / "polygolf.db") as db:
+            assert dict(db.execute("SELECT key, value FROM settings")) == {"a": str(run), "b": str(run)}
+        aside = list(folder.glob("polygolf.db.corrupt-*"))
+        assert len(aside) == 1 and aside[0].read_bytes().startswith(b"this is not a database")
+
+
 def test_a_corrupted_database_is_set_aside_and_the_round_saved_to_a_fresh_one(capsys):
     db = data_dir() / "polygolf.db"
     assert autoplay() == 0

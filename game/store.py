@@ -21,12 +21,10 @@ import json
 import sqlite3
 import sys
 import time
-from collections.abc import Iterator
-from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
-from polygolf.engine.loading.paths import data_dir
+from polygolf.engine.loading.paths import data_dir, exclusive
 
 DB_NAME = "polygolf.db"
 SCHEMA_VERSION = 1
@@ -71,25 +69,6 @@ HOLE_TYPES = {"r.course": "text", "h.hole": "text", "h.position": "integer", "h.
               "h.strokes": "integer", "h.par": "integer", "c.name": "text", "r.finished_at": "text"}
 ROUND_TYPES = {"r.course": "text", "r.course_name": "text", "r.shape": "text", "c.strokes": "integer",
                "c.par": "integer", "c.name": "text", "r.finished_at": "text"}
-
-
-@contextmanager
-def _locked(path: Path) -> Iterator[None]:
-    """An exclusive lock on `path` (made if need be) between processes, for as long as the block runs
-    (where the platform has no `fcntl`, or the file cannot be made, none: the block runs as it is)."""
-    try:
-        import fcntl
-
-        handle = path.open("a")
-    except (ImportError, OSError):  # (no lock to take: a folder that refuses the file refuses the move too)
-        yield
-        return
-    with handle:
-        fcntl.flock(handle, fcntl.LOCK_EX)
-        try:
-            yield
-        finally:
-            fcntl.flock(handle, fcntl.LOCK_UN)
 
 
 def _not_a_folder(folder: Path) -> str | None:
@@ -160,7 +139,7 @@ class Store:
         """Set the damaged file aside, if it is still the one at the database's path: another game may
         have found it damaged at the same time, set it aside first and begun a fresh one, which is not
         to be set aside in its turn (the lock file makes the look and the move one step for both)."""
-        with _locked(self.path.with_name(DB_NAME + ".lock")):
+        with exclusive(self.path.with_name(DB_NAME + ".lock")):
             if damaged is None or self._identity() != damaged:
                 return  # (gone already, or another game's fresh one: the work is tried again on it)
             stamp = time.strftime("%Y%m%d-%H%M%S")

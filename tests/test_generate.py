@@ -239,8 +239,8 @@ def test_random_nine_is_built_once_and_loaded_from_the_data_folder(library, isol
     prove = instant_proof()
     course = nine.build_nine(31, library=library, prove=prove)
     folder = isolated_user_data / "generated" / "nine-31"
-    assert sorted(p.name for p in folder.iterdir()) == ["courses.yaml", *(f"hole-{k}.yaml" for k in range(1, 10)),
-                                                        "nine.json"]
+    assert sorted(p.name for p in folder.iterdir()) == [".building", "courses.yaml",
+                                                        *(f"hole-{k}.yaml" for k in range(1, 10)), "nine.json"]
     assert course.id == "random-nine-31" and course.name == "Random nine · seed 31"
     assert [h.spec.name for h in course.playable] == [f"Random 31-{k}" for k in range(1, 10)]
     assert len(prove.calls) >= 9
@@ -348,13 +348,49 @@ def test_random_nine_in_the_course_choice_keeps_its_seed(library):
     game.random_seed, game.random_nine = 4242, None
     game.choose_random_nine(4242)
     assert game.course is not None and game.course.id == "random-nine-4242"  # from the folder
-    game.save_settings()
+    game.save_settings("course", "random_seed")
     later = Game.load(Store())
     assert later.random_chosen and later.random_seed == 4242 and later.course.id == "random-nine-4242"
     later.new_random_seed()
     assert later.random_seed != 4242 and later.course is None  # built when it is played
     round_ = game.start_round()
     assert round_.course.name == "Random nine · seed 4242" and round_.hole_count == 9
+
+
+def _build_together(seeds: list[int], start, out) -> None:
+    """(A process of the test below.) Each seed's nine built as soon as the other process is ready."""
+    library = load_library()
+    for seed in seeds:
+        start.wait()
+        prove = instant_proof()
+        try:
+            course = nine.build_nine(seed, library=library, prove=prove)
+            out.put((seed, course.id, len(prove.calls)))
+        except Exception as exc:  # (said to the test, which fails on it)
+            out.put((seed, f"{type(exc).__name__}: {exc}", len(prove.calls)))
+
+
+def test_two_games_building_one_seed_at_once_build_it_once(isolated_user_data):
+    """Two friends on one machine ask for the same Random nine together: one builds it, the other
+    waits and loads it (both built it, sharing part files and a manifest: one build failed now and
+    then, 'the course just built does not load')."""
+    import multiprocessing
+
+    seeds = [1100, 1101, 1102, 1103]
+    context = multiprocessing.get_context("fork")
+    start, out = context.Barrier(2), context.Queue()
+    workers = [context.Process(target=_build_together, args=(seeds, start, out)) for _ in range(2)]
+    for worker in workers:
+        worker.start()
+    results = [out.get(timeout=300) for _ in range(2 * len(seeds))]
+    for worker in workers:
+        worker.join(timeout=60)
+    for seed in seeds:
+        mine = [(course, calls) for found, course, calls in results if found == seed]
+        assert [course for course, _ in mine] == [f"random-nine-{seed}"] * 2, mine
+        assert sum(calls for _, calls in mine) == 9  # each hole made once, by one of them
+        folder = isolated_user_data / "generated" / f"nine-{seed}"
+        assert not list(folder.glob("*.part"))
 
 
 def test_the_build_thread_reports_progress_and_its_course(library):

@@ -25,7 +25,7 @@ from pathlib import Path
 from polygolf.engine.golf.generate import Prove, generate, golfer_proof, schema_ref
 from polygolf.engine.golf.holes import RANDOM_NINE_ID, Course, load_courses, load_hole
 from polygolf.engine.loading.course import TileLibrary, load_library
-from polygolf.engine.loading.paths import data_dir
+from polygolf.engine.loading.paths import data_dir, exclusive
 from polygolf.engine.loading.yamlsource import ContentError
 
 GENERATOR_VERSION = 1  # bump when the same seed would draw other holes
@@ -79,8 +79,9 @@ def _same_build(found: dict | None, wanted: dict) -> bool:
 
 
 def _write(path: Path, text: str) -> None:
-    """Whole or not at all: a build stopped mid-write leaves no half file."""
-    part = path.with_name(path.name + ".part")
+    """Whole or not at all: a build stopped mid-write leaves no half file (the part file is this
+    process's own)."""
+    part = path.with_name(f"{path.name}.{os.getpid()}.part")
     try:
         part.write_text(text, encoding="utf-8")
         os.replace(part, path)
@@ -185,6 +186,25 @@ def build_nine(seed: int, *, library: TileLibrary | None = None, prove: Prove | 
         return cached
     folder = nine_folder(seed)
     folder.mkdir(parents=True, exist_ok=True)
+    cancelled = cancelled or (lambda: False)
+
+    def waiting() -> None:
+        if cancelled():
+            raise BuildCancelled("stopped while another game built this seed")
+
+    # One game builds a seed at a time: another that asks for it meanwhile (two friends on one machine)
+    # waits, then loads what the first built, or goes on from the holes it finished.
+    with exclusive(folder / ".building", waiting):
+        return _build_nine(seed, folder, library, prove, progress, cancelled, workers)
+
+
+def _build_nine(seed: int, folder: Path, library: TileLibrary, prove: Prove | None,
+                progress: Callable[[int, int], None] | None, cancelled: Callable[[], bool],
+                workers: int | None) -> Course:
+    """`build_nine`'s work, while it alone builds the seed."""
+    cached = load_nine(seed, library)  # (another game may have built it while this one waited)
+    if cached is not None:
+        return cached
     wanted = _manifest(seed, library)
     manifest = _read_manifest(folder)
     if not _same_build(manifest, wanted):
@@ -196,8 +216,7 @@ def build_nine(seed: int, *, library: TileLibrary | None = None, prove: Prove | 
     workers = min(len(todo), workers or (1 if prove is not None else os.cpu_count() or 1))
     if todo and progress is not None:
         progress(done + 1, NINE)
-    for k, text, entry in _made([(seed, k, library, prove, schema) for k in todo], workers,
-                                cancelled or (lambda: False)):
+    for k, text, entry in _made([(seed, k, library, prove, schema) for k in todo], workers, cancelled):
         _write(folder / f"hole-{k}.yaml", text)
         manifest["holes"][str(k)] = entry
         _write(folder / "nine.json", json.dumps(manifest, indent=1, sort_keys=True) + "\n")

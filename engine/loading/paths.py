@@ -10,6 +10,9 @@ added to the shipped ones. User data (DATA): the platform's user data folder (pl
 from __future__ import annotations
 
 import os
+import time
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from importlib.resources import files
 from pathlib import Path
 
@@ -61,3 +64,30 @@ def named_file(arg: str | Path, folder: str) -> Path:
     elif path.parts[0] == "content" and CONTENT_DIR.joinpath(*path.parts[1:]).is_file():
         return CONTENT_DIR.joinpath(*path.parts[1:])
     return path
+
+
+@contextmanager
+def exclusive(path: Path, waiting: Callable[[], None] | None = None) -> Iterator[None]:
+    """An exclusive lock between processes (two games on one machine) on the file `path`, made if
+    need be, for as long as the block runs. While another process holds it, `waiting()` is called
+    every 50 ms (it may raise, to give up). Where the platform has no `fcntl`, or the file cannot be
+    made (a read-only folder refuses what the block would do too), there is no lock to take."""
+    try:
+        import fcntl
+
+        handle = path.open("a")
+    except (ImportError, OSError):
+        yield
+        return
+    with handle:
+        while True:
+            try:
+                fcntl.flock(handle, fcntl.LOCK_EX | (fcntl.LOCK_NB if waiting is not None else 0))
+                break
+            except BlockingIOError:
+                waiting()  # type: ignore[misc]
+                time.sleep(0.05)
+        try:
+            yield
+        finally:
+            fcntl.flock(handle, fcntl.LOCK_UN)

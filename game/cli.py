@@ -577,7 +577,7 @@ def build_parser() -> argparse.ArgumentParser:
     val.add_argument("paths", nargs="*", help="files or folders")
     val.add_argument("--prove", action="store_true",
                      help="also let the search golfer play each valid hole; warn if it cannot sink it or its par "
-                          "is off by more than one (about a minute for all the shipped holes)")
+                          "is off by more than one (some seconds for all the shipped holes)")
     val.set_defaults(run=_validate)
 
     par = sub.add_parser("par", help="the search golfer proves each hole can be sunk and estimates its par")

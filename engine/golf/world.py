@@ -92,12 +92,11 @@ def _drop_spots(layout: HoleLayout, radius: float) -> tuple[tuple[float, float],
 
 def hole_spec(hole: Hole, shape: ShapeSpec, players: int = 1) -> WorldSpec:
     """The world of `hole` played with `shape` (scaled to the library's ball radius) by `players`
-    players, each with a ball of their own: they meet each other on the green. Two balls are swept
-    against each other beyond the slop (`StepConfig.sweep_bodies`): continuous collision puts the
-    pair back to its time of impact (both, if they touch, to the earlier of theirs); of three or four side by
-    side, a ball put back is driven into by the one behind (a row struck at full power overlapped by
-    up to 39 cm at fast, against 24 cm without), so there the discrete contacts part what steps less
-    than half a ball's width."""
+    players, each with a ball of their own: they meet each other on the green. The balls are swept
+    against each other beyond the slop (`StepConfig.sweep_bodies`): continuous collision puts a
+    pair back to its time of impact (both, if they touch, to the earlier of theirs), and a ball put
+    back makes up at most a substep's time in the next (`motion.advance`), so one held back in a row
+    of balls does not jump on into the next."""
     if not 1 <= players <= MAX_PLAYERS:
         raise ValueError(f"players must be 1 to {MAX_PLAYERS}, not {players}")
     lib, spec, layout = hole.library, hole.spec, hole.layout
@@ -153,7 +152,7 @@ def hole_spec(hole: Hole, shape: ShapeSpec, players: int = 1) -> WorldSpec:
     return WorldSpec(name=f"hole-{hole.id}", bodies=balls, walls=walls, kinematic=windmills, entities=entities,
                      rules=rules, content_effects=content,
                      listed=tuple(spec.effects) if spec.effects is not None else None, listed_by="the hole",
-                     cell_size=lib.tile_size / 2.0, sweep_bodies=players == 2)
+                     cell_size=lib.tile_size / 2.0, sweep_bodies=players >= 2)
 
 
 def hole_effects(hole: Hole, substeps: int = 4) -> dict[str, str]:

@@ -73,7 +73,10 @@ def advance(state: np.ndarray, settles: np.ndarray, dt: float, still_step: float
         lag = state[k, LAG]
         if lag:
             # Continuous collision stopped the body early last substep; it now moves on with its new
-            # velocity for the time it lost, so impacts do not slow the clock.
+            # velocity for the time it lost, so impacts do not slow the clock: at most a substep's
+            # time, so a body stopped again and again (pressed into a row of balls) does not save up
+            # substep after substep of motion and then jump that far at once.
+            lag = min(lag, dt)
             step += lag
             state[k, ANGLE] += state[k, SPIN] * lag
             state[k, LAG] = 0.0

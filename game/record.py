@@ -13,6 +13,7 @@ import math
 import os
 import re
 import tempfile
+from functools import cache
 from pathlib import Path
 from typing import Annotated, Literal
 
@@ -21,6 +22,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 from polygolf.engine.golf.holes import Course, Hole
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.loading.yamlsource import read_at_most
+from polygolf.engine.physics.jit import engine_fingerprint
 
 FORMAT = "polygolf-replay"
 FORMAT_VERSION = 1
@@ -74,6 +76,7 @@ class RoundRecord(_Strict):
     format: Literal["polygolf-replay"] = FORMAT
     version: Literal[1] = FORMAT_VERSION
     game_version: str = ""
+    engine: str = ""  # the physics engine's digest (`engine`); "" in replays from before it was kept
     recorded_at: str = ""
     course: str  # course id
     course_name: str
@@ -181,6 +184,14 @@ def hole_fingerprint(hole: Hole) -> str:
     digest.update(hole.library.model_dump_json().encode())
     digest.update(hole.spec.model_dump_json().encode())
     return digest.hexdigest()
+
+
+@cache
+def engine() -> str:
+    """This physics engine's digest (`jit.engine_fingerprint`: its kernels' sources and numba's
+    version). A replay keeps the one it was recorded with: another engine need not replay it bit for
+    bit, and `replay --verify` says so."""
+    return engine_fingerprint()
 
 
 def fingerprint(course: Course) -> str:

@@ -20,7 +20,7 @@ from polygolf.engine.golf.layout import ball_fits
 from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.loading.paths import data_dir
 from polygolf.game.cli import main
-from polygolf.game.record import RoundRecord, load_record
+from polygolf.game.record import RoundRecord, engine, load_record
 from polygolf.game.replay import verify
 from polygolf.game.session import Game, Round, RoundPlay, par_text, penalty_text, strokes_text
 from polygolf.game.shapes import CATALOGUE
@@ -211,7 +211,19 @@ def test_a_tampered_replay_fails_verify_and_a_broken_one_is_refused(tmp_path, ca
     data["holes"][0]["final"][0]["strokes"] -= 1
     tampered.write_text(json.dumps(data))
     assert main(["replay", str(tampered), "--verify"]) == 1
-    capsys.readouterr()
+    assert capsys.readouterr().err == ""  # (this engine's own replay: no excuse)
+    # A replay of another engine (or from before replays named theirs) that differs says why it may.
+    assert len(data["engine"]) == 16
+    for recorded in ("0123456789abcdef", None):
+        if recorded is None:
+            del data["engine"]
+        else:
+            data["engine"] = recorded
+        tampered.write_text(json.dumps(data))
+        assert main(["replay", str(tampered), "--verify"]) == 1
+        assert capsys.readouterr().err == (f"polygolf: {tampered} was recorded by another physics engine "
+                                           f"({recorded or 'from before replays kept it'}; this one {engine()}): "
+                                           "it need not replay bit for bit\n")
     endless = json.loads(path.read_text())
     endless["holes"][0]["frames"] = 10 ** 12  # would take for ever to check: refused before any work
     for text in ("{", json.dumps({"format": "polygolf-replay", "version": 1}), json.dumps([1, 2]),

@@ -16,6 +16,7 @@ import importlib.util
 import json
 import math
 import os
+import re
 import sys
 import time
 from collections.abc import Sequence
@@ -203,8 +204,13 @@ def _prove_warnings(paths, broken: set[str]) -> list[str]:
     from polygolf.game.tools.validate import _kind, content_files
 
     files = [f for f in content_files(paths) if _kind(f) == "hole" and str(f) not in broken]
-    holes = {f: load_hole_file(f) for f in files}
-    files = [f for f in files if not launches(holes[f])]  # (nobody plays a collision test: no par to prove)
+    holes = {}
+    for f in files:
+        try:
+            holes[f] = load_hole_file(f)
+        except ContentError:
+            continue  # (its library is broken: validate reports that file)
+    files = [f for f in holes if not launches(holes[f])]  # (nobody plays a collision test: no par to prove)
     if files:
         startup.prepare_physics()
     proofs = prove_all([holes[f] for f in files])
@@ -388,8 +394,13 @@ def _scores(args: argparse.Namespace) -> int:
     from polygolf.game.store import Store
 
     store = Store()
-    # A course's id is its name in lower case, spaces as dashes: `--course "Meadow"` means meadow.
-    bests = store.bests(args.course and args.course.lower().replace(" ", "-"))
+    # A course's id is its name in lower case, spaces as dashes: `--course "Meadow"` means meadow, and
+    # "Random nine · seed 777" (as the scorecard names it) random-nine-777.
+    wanted = args.course
+    if wanted is not None:
+        nine = re.fullmatch(r"random[ -]nine[ ·-]+(?:seed[ -]*)?(\d+)", wanted.strip(), re.IGNORECASE)
+        wanted = f"random-nine-{nine.group(1)}" if nine else wanted.lower().replace(" ", "-")
+    bests = store.bests(wanted)
     if args.json:
         print(json.dumps([{"course": b.course, "hole": b.hole, "number": None if b.position is None else b.position + 1,
                            "name": b.name, "shape": b.shape, "strokes": b.strokes, "par": b.par, "player": b.player,
@@ -627,6 +638,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     except (KeyError, ValueError) as exc:  # unknown course, theme, shape, hole number
         print(f"polygolf: {exc.args[0] if exc.args else exc}", file=sys.stderr)
         return EXIT_CONTENT
+    except KeyboardInterrupt:  # Ctrl-C: what was finished is kept (a Random nine's holes built so far)
+        print("polygolf: stopped", file=sys.stderr)
+        return 130
     except BrokenPipeError:
         # The reader went away (`polygolf simulate ... | head`): stop quietly, as command-line tools do.
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())

@@ -12,7 +12,7 @@ import json
 import math
 import os
 import re
-import tempfile
+import secrets
 from functools import cache
 from pathlib import Path
 from typing import Annotated, Literal
@@ -108,13 +108,13 @@ class RoundRecord(_Strict):
             except FileExistsError:
                 n += 1
         try:
-            handle, tmp = tempfile.mkstemp(dir=folder, prefix=f".{path.stem}-", suffix=".tmp")
+            tmp = folder / f".{path.stem}-{os.getpid()}-{secrets.token_hex(4)}.tmp"  # (made with the usual mode)
             try:
-                with os.fdopen(handle, "w", encoding="utf-8") as out:
+                with tmp.open("x", encoding="utf-8") as out:
                     out.write(text)
                 os.replace(tmp, path)
             except BaseException:
-                Path(tmp).unlink(missing_ok=True)
+                tmp.unlink(missing_ok=True)
                 raise
         except BaseException:
             path.unlink(missing_ok=True)  # (not a replay: the name goes back)

@@ -139,7 +139,14 @@ class Store:
         """Set the damaged file aside, if it is still the one at the database's path: another game may
         have found it damaged at the same time, set it aside first and begun a fresh one, which is not
         to be set aside in its turn (the lock file makes the look and the move one step for both)."""
-        with exclusive(self.path.with_name(DB_NAME + ".lock")):
+        deadline = time.monotonic() + LOCK_TIMEOUT
+
+        def waiting() -> None:  # (a game stopped while it held the lock must not hold this one for ever)
+            if time.monotonic() > deadline:
+                self.warn(f"{self.path} is damaged ({why}) and another game is setting it aside; nothing saved")
+                raise OSError("the lock is held")
+
+        with exclusive(self.path.with_name(DB_NAME + ".lock"), waiting):
             if damaged is None or self._identity() != damaged:
                 return  # (gone already, or another game's fresh one: the work is tried again on it)
             stamp = time.strftime("%Y%m%d-%H%M%S")

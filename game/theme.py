@@ -78,7 +78,7 @@ def load_themes(directories: list[Path] | None = None) -> tuple[list[Theme], lis
         except ContentError as exc:
             problems.append(exc)
             continue
-        taken[theme.name.lower()] = path
+        taken[_key(theme.name)] = path
         themes.append(theme)
     return sorted(themes, key=lambda t: (t.name != "Grass", t.name)) or [FALLBACK], problems
 
@@ -91,11 +91,16 @@ def theme_files(directories: list[Path] | None = None) -> list[Path]:
 
 def check_name_free(theme: Theme, path: Path, taken: dict[str, Path]) -> None:
     """Raise a ContentError at the theme's name if a theme loaded before it has that name (in any
-    case: the command line finds a theme by it)."""
-    if theme.name.lower() in taken:
+    case, spaces about it aside: the command line finds a theme by it)."""
+    if _key(theme.name) in taken:
         raise ContentError(path, line_of(("name",), load_yaml(path)[1]), "name",
-                           f"theme name {theme.name!r} is taken by {taken[theme.name.lower()]}: give this theme "
+                           f"theme name {theme.name!r} is taken by {taken[_key(theme.name)]}: give this theme "
                            "another name")
+
+
+def _key(name: str) -> str:
+    """What tells theme names apart: not case, nor spaces before or after (the menu shows them alike)."""
+    return name.strip().casefold()
 
 
 def themes_before(path: Path) -> dict[str, Path]:
@@ -110,12 +115,12 @@ def themes_before(path: Path) -> dict[str, Path]:
             check_name_free(theme, file, taken)
         except ContentError:
             continue  # (its own problems are its own)
-        taken[theme.name.lower()] = file
+        taken[_key(theme.name)] = file
     return taken
 
 
 def find_theme(themes: list[Theme], name: str) -> Theme:
     for theme in themes:
-        if theme.name.lower() == name.lower():
+        if _key(theme.name) == _key(name):
             return theme
     raise KeyError(f"no theme {name!r}; themes: {', '.join(t.name.lower() for t in themes)}")

@@ -461,6 +461,68 @@ def test_a_hole_file_played_with_course_options_says_they_are_not_for_it(extra, 
                                        "(they are for a course)\n")
 
 
+def test_names_on_the_command_line_that_read_as_something_else(content_copy, tmp_path, monkeypatch, capsys):
+    """QA of the names: a broken hole named by its id says what is wrong with it; '²' is no hole
+    number; a folder named like a scene does not hide it; a course's name may not hold ':' or '/'
+    (COURSE:HOLE and paths use them); a theme named ' sand' is Sand's; a hole whose library is broken
+    does not end `validate --prove` early."""
+    from polygolf.engine.loading.paths import user_content_dir
+
+    mine = user_content_dir() / "holes"
+    mine.mkdir(parents=True)
+    (mine / "good.yaml").write_text("name: Good\npar: 2\ntiles:\n  - {at: [0, 0]}\n  - {at: [1, 0]}\n")
+    (mine / "bad.yaml").write_text("name: Bad\npar: 2\ntiles:\n  - {at: [0, 0]}\n  - {at: [1, 0], borders: nosuch}\n")
+    (mine / "courses.yaml").write_text("courses:\n  - name: Mine\n    holes: [good, bad]\n")
+    assert main(["explain", "mine:bad"]) == 2
+    assert capsys.readouterr().err.startswith(f"polygolf: {mine / 'bad.yaml'}:5: tiles[1].borders: unknown border set")
+    assert main(["explain", "meadow:\u00b2"]) == 2
+    assert capsys.readouterr().err.startswith("polygolf: meadow has holes 1 to 9 (or give a hole's name: straight, ")
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "pile").mkdir()
+    assert main(["simulate", "pile", "--seconds", "0.05"]) == 0 and capsys.readouterr().out.startswith("pile: ")
+    for name in ("Tour: Spring", "Front/Back"):
+        (mine / "courses.yaml").write_text(f"courses:\n  - name: '{name}'\n    holes: [good]\n")
+        assert main(["validate", str(mine / "courses.yaml")]) == 1
+        assert "courses[0].name: a course's name may not hold ':', '/'" in capsys.readouterr().err
+    (mine / "courses.yaml").write_text("courses:\n  - name: Mine\n    holes: [good]\n")
+    themes = user_content_dir() / "themes"
+    themes.mkdir()
+    (themes / "dune.yaml").write_text((content_copy / "themes" / "sand.yaml").read_text().replace("name: Sand",
+                                                                                                   "name: ' sand '"))
+    assert main(["validate", str(themes / "dune.yaml")]) == 1
+    assert "theme name ' sand ' is taken by" in capsys.readouterr().err
+    (themes / "dune.yaml").unlink()
+    library = tmp_path / "own"
+    library.mkdir()
+    (library / "tiles.yaml").write_text((content_copy / "holes" / "tiles.yaml").read_text().replace(
+        "open-ew: {e: open, w: open}", "open-ew: {e: opn, w: open}"))
+    (library / "h.yaml").write_text("name: H\npar: 2\ntiles:\n  - {at: [0, 0]}\n  - {at: [1, 0]}\n")
+    assert main(["validate", "--prove", str(library)]) == 1
+    out, err = capsys.readouterr()
+    assert out.startswith("2 files checked, ") and "tiles.yaml" in err and "Traceback" not in err
+
+
+def test_ctrl_c_is_one_line(monkeypatch, capsys):
+    from polygolf.game import cli
+
+    def interrupted(args):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(cli, "_scores", interrupted)
+    parser = cli.build_parser
+    monkeypatch.setattr(cli, "build_parser", lambda: _with_run(parser(), interrupted))
+    assert main(["scores"]) == 130
+    assert capsys.readouterr().err == "polygolf: stopped\n"
+
+
+def _with_run(parser, run):
+    parser.set_defaults(run=run)
+    for action in parser._subparsers._group_actions:  # (each command's own default)
+        for sub in action.choices.values():
+            sub.set_defaults(run=run)
+    return parser
+
+
 def test_a_link_to_itself_beside_a_watched_hole_does_not_end_the_watching(tmp_path):
     from polygolf.game.watch import FileWatcher
 

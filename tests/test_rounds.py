@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import re
 import sqlite3
 from pathlib import Path
@@ -275,6 +276,9 @@ def test_two_games_saving_replays_at_once_never_share_a_file(tmp_path):
     players = sorted(load_record(Path(path)).players[0] for path in paths)
     assert players == ["Ann"] * 60 + ["Bob"] * 60
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(Path(path).name for path in paths)  # no .tmp left
+    umask = os.umask(0)
+    os.umask(umask)
+    assert {Path(path).stat().st_mode & 0o777 for path in paths} == {0o666 & ~umask}  # (not 0600: a file like any)
 
 
 def test_a_replay_is_saved_whatever_its_course_is_called(tmp_path):
@@ -379,6 +383,24 @@ def test_two_games_meeting_one_damaged_database_set_it_aside_once_and_both_save(
             assert dict(db.execute("SELECT key, value FROM settings")) == {"a": str(run), "b": str(run)}
         aside = list(folder.glob("polygolf.db.corrupt-*"))
         assert len(aside) == 1 and aside[0].read_bytes().startswith(b"this is not a database")
+
+
+def test_a_damaged_database_whose_lock_another_game_holds_is_given_up_in_seconds(tmp_path):
+    """A game stopped (Ctrl-Z) while it set a damaged database aside holds the lock: another waits the
+    save's time, not for ever, and says why nothing was saved."""
+    import fcntl
+    import time
+
+    (tmp_path / "polygolf.db").write_bytes(b"this is not a database\n" * 200)
+    with (tmp_path / "polygolf.db.lock").open("a") as held:
+        fcntl.flock(held, fcntl.LOCK_EX)
+        store = Store(tmp_path, echo=False)
+        started = time.monotonic()
+        assert store.save_settings({"a": 1}) is False
+        assert time.monotonic() - started < 10.0  # (a bound against waiting for ever, not a speed test)
+    assert store.warnings == [f"polygolf: {tmp_path / 'polygolf.db'} is damaged (file is not a database) and "
+                              "another game is setting it aside; nothing saved"]
+    assert Store(tmp_path, echo=False).save_settings({"a": 1})  # the lock let go: set aside, saved
 
 
 def test_a_corrupted_database_is_set_aside_and_the_round_saved_to_a_fresh_one(capsys):

@@ -120,6 +120,10 @@ def load_courses(path: str | Path | None = None, library: TileLibrary | None = N
     seen = {RANDOM_NINE_ID: "Random nine", **{taken_id: "a course of another content folder" for taken_id in taken}}
     for c, course in enumerate(spec.courses):
         loaded = Course(id=course.name.lower().replace(" ", "-"), name=course.name)
+        if any(mark in course.name for mark in ":/\\"):
+            loc = ("courses", c, "name")
+            raise ContentError(path, line_of(loc, lines), format_loc(loc),
+                               "a course's name may not hold ':', '/' or '\\' (COURSE:HOLE and file paths use them)")
         if loaded.id in seen:
             loc = ("courses", c, "name")
             raise ContentError(path, line_of(loc, lines), format_loc(loc),

@@ -4,6 +4,7 @@ tests can fire exact shots on real holes. Scenes without a hole are built by `lo
 
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 from pathlib import Path
 
@@ -25,10 +26,10 @@ def find_hole(name: str, beside: Path) -> Hole:
         course_name, which = name.split(":", 1)
         courses, unread = load_all_courses()
         holes = find_course(courses, course_name, unread).holes
-        if which.isdigit() and len(which) < 5 and 1 <= int(which) <= len(holes):
+        if re.fullmatch(r"[0-9]{1,4}", which) and 1 <= int(which) <= len(holes):
             hole = holes[int(which) - 1]
-        else:
-            hole = next((h for h in holes if isinstance(h, Hole) and h.id == which), None)
+        else:  # by its id: its file's name (a broken hole's too, to say what is wrong with it)
+            hole = next((h for h in holes if (h.id if isinstance(h, Hole) else Path(h.file).stem) == which), None)
             if hole is None:
                 raise KeyError(f"{course_name} has holes 1 to {len(holes)} (or give a hole's name: "
                                f"{', '.join(h.id for h in holes if isinstance(h, Hole))})")

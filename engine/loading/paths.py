@@ -54,7 +54,7 @@ def named_file(arg: str | Path, folder: str) -> Path:
     from the source tree (`content/scenes/pile.yaml`) in the shipped content, as the README writes
     them; else the path as given (its loader says it is missing)."""
     path = Path(arg)
-    if path.exists() or path.is_absolute():
+    if path.is_file() or path.is_absolute():
         return path
     if len(path.parts) == 1:
         name = path.name if path.suffix in (".yaml", ".yml") else f"{path.name}.yaml"

@@ -156,12 +156,17 @@ class Store:
                 n += 1
                 target = self.path.with_name(f"{DB_NAME}.corrupt-{stamp}-{n}")
             try:
+                # Its journals first, while the damaged file still stands at the path (no game can begin
+                # a fresh one there, whose journal this would take): left, one would be played into the
+                # fresh database.
+                for suffix in ("-journal", "-wal", "-shm"):
+                    journal = self.path.with_name(DB_NAME + suffix)
+                    if journal.exists():
+                        journal.rename(target.with_name(target.name + suffix))
                 self.path.rename(target)
             except OSError as exc:
                 self.warn(f"{self.path} is damaged ({why}) and cannot be set aside ({exc.strerror}); nothing saved")
                 raise
-            for suffix in ("-journal", "-wal", "-shm"):  # (the damaged file's: no fresh one is begun yet)
-                self.path.with_name(DB_NAME + suffix).unlink(missing_ok=True)
         self.warn(f"{self.path} was damaged ({why}); kept as {target.name}, starting a fresh one")
 
     def _transaction(self, work, default, what: str, write: bool = True):

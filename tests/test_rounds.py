@@ -549,3 +549,14 @@ def test_a_restart_never_drops_a_ball_onto_another():
         assert play.sim.metrics.max_penetration <= 0.011
     finally:
         play.close()
+
+
+def test_scores_of_a_course_nobody_knows_says_so_and_of_a_known_one_without_rounds_says_none_yet(capsys):
+    assert main(["scores", "--course", "medow"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("polygolf: no course 'medow'; courses: meadow, hazards"), err
+    assert main(["scores", "--course", "medow", "--json"]) == 2
+    capsys.readouterr()
+    for known in ("Meadow", "hazards", "Random nine · seed 12"):
+        assert main(["scores", "--course", known]) == 0
+        assert capsys.readouterr().out.strip() == f"no rounds saved yet on {known}"

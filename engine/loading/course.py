@@ -155,7 +155,8 @@ class HoleSpec(Strict_):
     name: Name
     par: count(1, 20)
     max_strokes: count(1, 99) | None = None
-    tiles: Annotated[list[TilePlacement], Field(min_length=1, max_length=MAX_TILES)]
+    # Two or more: the first holds the tee and the last the cup, each at its centre.
+    tiles: Annotated[list[TilePlacement], Field(min_length=2, max_length=MAX_TILES)]
     green: DragSpec | None = None  # overrides the library's
     launch: Launch | None = None
     effects: list[HoleEffect] | None = None  # omitted: what the hole's content needs

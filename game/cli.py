@@ -291,6 +291,19 @@ def _play(args: argparse.Namespace) -> int:
                    player_names(args.players, args.names), args.seed)
 
 
+def _keep_aside(path: Path, text: str) -> Path | None:
+    """An author's file about to be written over with other text is renamed to FILE.bak first (the
+    one before it there goes); returns that name, or None when nothing is lost."""
+    try:
+        if path.read_text(encoding="utf-8", errors="replace") == text:
+            return None
+    except FileNotFoundError:
+        return None
+    kept = path.with_name(path.name + ".bak")
+    path.replace(kept)
+    return kept
+
+
 def _generate(args: argparse.Namespace) -> int:
     """One procedural hole: drawn, loaded, proven by the search golfer (draws it cannot sink are
     refused), written with the golfer's par, and checked again as `validate` checks it."""
@@ -321,10 +334,13 @@ def _generate(args: argparse.Namespace) -> int:
         print(f"polygolf: {exc}", file=sys.stderr)
         return 1
     try:
+        kept = _keep_aside(out, made.text)
         out.write_text(made.text, encoding="utf-8")
     except OSError as exc:
         print(f"polygolf: --out: cannot write {out}: {exc.strerror or exc}", file=sys.stderr)
         return EXIT_CONTENT
+    if kept is not None:
+        print(f"polygolf: {out} held another hole: it is kept as {kept}", file=sys.stderr)
     problems = check_file(out)
     for problem in problems:
         print(problem, file=sys.stderr)

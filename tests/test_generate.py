@@ -205,6 +205,21 @@ def test_generate_command_writes_a_valid_proven_hole(tmp_path, monkeypatch, caps
     assert [line for line in again.read_text().splitlines() if not line.startswith("# yaml-")] == body
 
 
+def test_generate_over_an_authors_file_keeps_it_as_bak(tmp_path, monkeypatch, capsys):
+    prove = instant_proof(strokes=2)
+    monkeypatch.setattr("polygolf.engine.golf.generate.golfer_proof", lambda *a, **k: prove)
+    out = tmp_path / "mine.yaml"
+    out.write_text("name: My own\n")
+    assert main(["generate", "--seed", "77", "--out", str(out)]) == 0
+    assert (tmp_path / "mine.yaml.bak").read_text() == "name: My own\n"
+    assert capsys.readouterr().err.strip().splitlines()[-1] == \
+        f"polygolf: {out} held another hole: it is kept as {out}.bak"
+    made = out.read_text()
+    assert main(["generate", "--seed", "77", "--out", str(out)]) == 0  # the same text again: nothing to keep
+    assert "kept as" not in capsys.readouterr().err
+    assert out.read_text() == made and (tmp_path / "mine.yaml.bak").read_text() == "name: My own\n"
+
+
 @pytest.mark.parametrize("args, message", [
     (["generate", "--out", "x.yaml"], "the following arguments are required: --seed"),
     (["generate", "--seed", "-3", "--out", "x.yaml"], "'-3' is not a seed"),

@@ -113,15 +113,24 @@ def build_nine_here(seed: int):
 
     prepare_physics()  # here, not in each worker process: they load what it compiled
     started = time.perf_counter()
+    built = False
 
     def progress(k: int, total: int) -> None:
+        nonlocal built
+        built = True
         print(f"polygolf: Random nine, seed {seed}: building hole {k} of {total}...", file=sys.stderr, flush=True)
 
+    def waiting() -> None:
+        print(f"polygolf: Random nine, seed {seed}: another game is building it; waiting for it...", file=sys.stderr,
+              flush=True)
+
     try:
-        course = build_nine(seed, progress=progress)
+        course = build_nine(seed, progress=progress, waiting=waiting)
     except OSError as exc:
         raise ValueError(f"cannot write Random nine to {nine_folder(seed)}: {exc.strerror or exc}") from exc
-    print(f"polygolf: Random nine, seed {seed}: {NINE} holes built and proven in {time.perf_counter() - started:.0f} s",
+    seconds = time.perf_counter() - started
+    print(f"polygolf: Random nine, seed {seed}: {NINE} holes built and proven in {seconds:.0f} s" if built else
+          f"polygolf: Random nine, seed {seed}: {NINE} holes ready, built by another game (waited {seconds:.0f} s)",
           file=sys.stderr)
     return course
 

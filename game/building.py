@@ -9,6 +9,7 @@ that shows the build draws text only and leaves for the menu only after the thre
 
 from __future__ import annotations
 
+import inspect
 import threading
 import time
 from collections.abc import Callable
@@ -24,6 +25,7 @@ class NineBuild:
         self.seed = seed
         self.total = NINE
         self.hole = 0  # the hole being built (1-based); 0 before the first
+        self.waiting = False  # for another game building the same seed (until this one builds or has it)
         self.course: Course | None = None
         self.error: str | None = None
         self.started = 0.0
@@ -39,7 +41,8 @@ class NineBuild:
 
     def _run(self) -> None:
         try:
-            self.course = self._build(self.seed, progress=self._progress, cancelled=self._stop.is_set)
+            told = {"waiting": self._waiting} if _takes(self._build, "waiting") else {}
+            self.course = self._build(self.seed, progress=self._progress, cancelled=self._stop.is_set, **told)
         except BuildCancelled:
             pass
         except Exception as exc:  # any failure is shown on the screen, never a dead thread and a hung screen
@@ -49,6 +52,9 @@ class NineBuild:
 
     def _progress(self, hole: int, total: int) -> None:
         self.hole, self.total = hole, total
+
+    def _waiting(self) -> None:
+        self.waiting = True
 
     def cancel(self) -> None:
         """Stop soon: the workers are stopped, the holes finished are kept for next time."""
@@ -72,9 +78,22 @@ class NineBuild:
         if self.error is not None:
             return f"Could not build it: {self.error}"
         if self.course is not None:
+            if self.waiting and self.hole == 0:
+                return f"Ready: another game built it (waited {self.seconds:.0f} s)"
             return f"Built in {self.seconds:.0f} s"
         if self.cancelled:
             return "Stopping (the holes finished are kept for next time)…"
+        if self.hole == 0 and self.waiting:
+            return "Another game is building it: waiting for it…"
         if self.hole == 0:
             return "Looking for holes already built…"
         return f"Building hole {self.hole} of {self.total}…"
+
+
+def _takes(build: Callable[..., Course], name: str) -> bool:
+    """Whether `build` takes the keyword `name` (a build given in its place may take only the first ones)."""
+    try:
+        parameters = inspect.signature(build).parameters.values()
+    except (TypeError, ValueError):
+        return False
+    return any(p.name == name or p.kind is p.VAR_KEYWORD for p in parameters)

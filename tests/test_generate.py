@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import functools
 import json
+import threading
 import time
 from pathlib import Path
 from types import SimpleNamespace
@@ -408,6 +409,35 @@ def test_two_games_building_one_seed_at_once_build_it_once(isolated_user_data):
         assert not list(folder.glob("*.part"))
 
 
+def test_a_game_waiting_for_another_games_build_is_told_once_then_has_the_course(isolated_user_data, library,
+                                                                                   monkeypatch, capsys):
+    import fcntl
+
+    from polygolf.game import app
+
+    monkeypatch.setattr(nine, "build_nine", functools.partial(nine.build_nine, prove=instant_proof(), workers=1))
+    app.build_nine_here(2468)  # built here: said so
+    assert capsys.readouterr().err.strip().splitlines()[-1].startswith(
+        "polygolf: Random nine, seed 2468: 9 holes built and proven in ")
+    folder = nine.nine_folder(2469)
+    folder.mkdir(parents=True)
+    with (folder / ".building").open("a") as other:  # another game holds the seed while it builds it
+
+        def other_game() -> None:
+            time.sleep(0.2)
+            nine._build_nine(2469, folder, library, instant_proof(), None, lambda: False, 1)
+            fcntl.flock(other, fcntl.LOCK_UN)
+
+        fcntl.flock(other, fcntl.LOCK_EX)
+        threading.Thread(target=other_game).start()
+        course = app.build_nine_here(2469)
+    err = capsys.readouterr().err.strip().splitlines()
+    assert course.id == "random-nine-2469"
+    assert err[0] == "polygolf: Random nine, seed 2469: another game is building it; waiting for it..."
+    assert len(err) == 2 and err[1].startswith(
+        "polygolf: Random nine, seed 2469: 9 holes ready, built by another game (waited "), err
+
+
 def test_the_build_thread_reports_progress_and_its_course(library):
     from polygolf.game.building import NineBuild
 
@@ -438,6 +468,16 @@ def test_the_build_thread_reports_progress_and_its_course(library):
     build.cancel()
     assert build.wait(5.0) and build.course is None and build.error is None
 
+    def behind_another(seed, progress, cancelled, waiting):
+        waiting()
+        time.sleep(0.05)
+        return "the course"
+
+    build = NineBuild(3, build=behind_another).start()
+    time.sleep(0.02)
+    assert build.status == "Another game is building it: waiting for it…"
+    assert build.wait(5.0) and build.status.startswith("Ready: another game built it (waited ")
+
 
 def test_play_random_nine_builds_it_with_console_lines(library, monkeypatch, capsys):
     from polygolf.game import app
@@ -466,3 +506,15 @@ def test_generated_files_are_what_validate_and_the_schema_accept(tmp_path, libra
                          "hole.schema.json").read_text())
     for seed in (1, 2, 3):
         jsonschema.validate(yaml.safe_load(generate_hole(seed, library)), schema)
+
+
+def test_the_build_lock_does_not_follow_a_link_in_its_place(tmp_path):
+    from polygolf.engine.loading.paths import exclusive
+
+    target = tmp_path / "elsewhere" / "made.txt"
+    target.parent.mkdir()
+    (tmp_path / ".building").symlink_to(target)
+    ran = []
+    with exclusive(tmp_path / ".building", lambda: None):
+        ran.append(True)
+    assert ran and not target.exists()

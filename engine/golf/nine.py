@@ -174,12 +174,14 @@ def _kill(pool: ProcessPoolExecutor) -> None:
 
 def build_nine(seed: int, *, library: TileLibrary | None = None, prove: Prove | None = None,
                progress: Callable[[int, int], None] | None = None,
-               cancelled: Callable[[], bool] | None = None, workers: int | None = None) -> Course:
+               cancelled: Callable[[], bool] | None = None, workers: int | None = None,
+               waiting: Callable[[], None] | None = None) -> Course:
     """The course of `seed`: from the data folder, else generated and proven, in `workers` processes
     at once (default: one a core for the real golfer; a given `prove`, here, unless `workers` says).
     `progress(k, 9)` says hole k is being made (k - 1 are done); `cancelled()` is asked while it
-    works (then BuildCancelled; the holes finished are kept). Raises GenerateError if a hole cannot
-    be made, OSError if the data folder cannot be written."""
+    works (then BuildCancelled; the holes finished are kept); `waiting()` is called once if another
+    game is building the seed and this one waits for it. Raises GenerateError if a hole cannot be
+    made, OSError if the data folder cannot be written."""
     library = library or load_library()
     cached = load_nine(seed, library)
     if cached is not None:
@@ -188,13 +190,19 @@ def build_nine(seed: int, *, library: TileLibrary | None = None, prove: Prove | 
     folder.mkdir(parents=True, exist_ok=True)
     cancelled = cancelled or (lambda: False)
 
-    def waiting() -> None:
+    told = False
+
+    def wait() -> None:
+        nonlocal told
         if cancelled():
             raise BuildCancelled("stopped while another game built this seed")
+        if not told and waiting is not None:
+            waiting()
+        told = True
 
     # One game builds a seed at a time: another that asks for it meanwhile (two friends on one machine)
     # waits, then loads what the first built, or goes on from the holes it finished.
-    with exclusive(folder / ".building", waiting):
+    with exclusive(folder / ".building", wait):
         return _build_nine(seed, folder, library, prove, progress, cancelled, workers)
 
 

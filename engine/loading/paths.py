@@ -75,7 +75,9 @@ def exclusive(path: Path, waiting: Callable[[], None] | None = None) -> Iterator
     try:
         import fcntl
 
-        handle = path.open("a")
+        # (A link in its place is not followed: the lock never makes or opens a file elsewhere.)
+        handle = os.fdopen(os.open(path, os.O_WRONLY | os.O_APPEND | os.O_CREAT | getattr(os, "O_NOFOLLOW", 0), 0o644),
+                           "a")
     except (ImportError, OSError):
         yield
         return

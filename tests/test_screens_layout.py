@@ -265,12 +265,14 @@ def test_the_random_nine_screen_fits_small_windows(sized, size, shots_dir):  # n
 
     game = Game.load()
     game.random_seed = 123456789
-    for build in (NineBuild(game.random_seed), NineBuild(game.random_seed, build=failing).start()):
+    waiting = NineBuild(game.random_seed)
+    waiting.waiting = True  # (never started: as the thread sets it while another game builds the seed)
+    for build in (NineBuild(game.random_seed), waiting, NineBuild(game.random_seed, build=failing).start()):
         view = BuildView(game, build, ScreenFlow(sized, game))
         sized.show_view(view)
-        if build.error is None:
+        if build.error is None and build is not waiting:
             build.hole, build.total = 3, 9  # (never started: its progress as the thread would set it)
-        else:
+        elif build.error is not None:
             assert build.wait(5)
         view.on_update(0.1)
         resize(sized, *size)
@@ -285,6 +287,9 @@ def test_the_random_nine_screen_fits_small_windows(sized, size, shots_dir):  # n
         if build.error is not None:
             assert view.status.bottom >= view.back.rect.top
             assert_not_blank(snapshot(sized, shots_dir, f"layout-build-error-{size[0]}"), "build")
+        if build is waiting:
+            assert view.status.text == "Another game is building it: waiting for it…"
+            assert_not_blank(snapshot(sized, shots_dir, f"layout-build-waiting-{size[0]}"), "build")
 
 
 @pytest.mark.parametrize("names", [LONG_NAMES, ["Ann", "Bob"]], ids=["long", "short"])

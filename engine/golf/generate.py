@@ -285,9 +285,8 @@ def plan_hole(seed: int, library: TileLibrary, number: int = 1, draw: int = 0) -
 # --- the dry-route check ----------------------------------------------------------------------------
 
 def _spec(tiles: list[PlannedTile]) -> HoleSpec:
-    """A hole of these tiles, to lay out (not a file: one tile alone is laid out to test it)."""
-    placed = [TilePlacement(at=t.at, borders=t.borders, pattern=t.pattern, rotate=t.rotate) for t in tiles]
-    return HoleSpec.model_construct(name="candidate", par=3, tiles=placed)
+    return HoleSpec(name="candidate", par=3, tiles=[TilePlacement(at=t.at, borders=t.borders, pattern=t.pattern,
+                                                                  rotate=t.rotate) for t in tiles])
 
 
 def tile_passable(tile: PlannedTile, library: TileLibrary, entry: str | None, exit_: str | None) -> bool:

@@ -34,6 +34,9 @@ def load_hole(path: str | Path, library: TileLibrary) -> Hole:
     borders, and neither the tee nor the cup is blocked, in water or in a windmill's sweep."""
     parsed = parse_hole(path, library)
     spec = parsed.spec
+    if len(spec.tiles) == 1:
+        raise parsed.error(("tiles",), "a hole needs two tiles or more: the first holds the tee and the last the "
+                                       "cup, each at its centre (one tile puts the tee in the cup)")
     if tile_path(spec, library) is None:
         raise parsed.error(("tiles", len(spec.tiles) - 1),
                            "the cup cannot be reached from the tee through open borders")

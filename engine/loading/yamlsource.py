@@ -216,7 +216,6 @@ def _message(err: dict) -> str:
     message = re.sub(r"a valid dictionary or instance of (\w+)", r"a mapping (\1)", err["msg"])
     if message.startswith("Value error, "):
         message = message[len("Value error, "):]
-    message = message.replace(" after validation,", ",")  # (pydantic's words: a list's length is of the file's)
     if err["type"] == "extra_forbidden":
         message = "unknown key"
     elif err["type"] == "missing":

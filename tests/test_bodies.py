@@ -22,6 +22,7 @@ from polygolf.engine.physics.body import (
     INV_MASS,
     LAG,
     SPIN,
+    STILL_TIME,
     VX,
     VY,
     Body,
@@ -128,6 +129,18 @@ def test_advance_puts_a_settling_body_to_rest_after_time_to_rest_and_no_sooner()
         motion.advance(state, settles, DT, REST_LINEAR * DT, REST_ANGULAR * DT, REST_SPEED_CAP, TIME_TO_REST)
     assert state[0, ASLEEP] and state[0, VX] == 0.0
     assert not state[1, ASLEEP] and not state[2, ASLEEP]
+
+
+def test_a_body_woken_by_a_touching_one_goes_on_from_the_lesser_still_time():
+    """Moving into a sleeper: both begin again from zero. Still beside it (come to rest against it a
+    moment later): both go on from the still one's time, so the two sleep together and a row of
+    balls at rest falls asleep (from zero pair by pair, three in a row never did)."""
+    state = rows(4)
+    state[:, STILL_TIME] = 0.0, TIME_TO_REST, 0.5 * TIME_TO_REST, TIME_TO_REST
+    state[[1, 3], ASLEEP] = 1.0
+    motion.wake_pairs(state, np.array([[0, 1], [2, 3]], dtype=np.int64))
+    assert not state[:, ASLEEP].any()
+    assert state[:, STILL_TIME].tolist() == [0.0, 0.0, 0.5 * TIME_TO_REST, 0.5 * TIME_TO_REST]
 
 
 def test_drag_follows_the_closed_form_and_uses_the_surface_scale_once():

@@ -560,3 +560,29 @@ def test_scores_of_a_course_nobody_knows_says_so_and_of_a_known_one_without_roun
     for known in ("Meadow", "hazards", "Random nine · seed 12"):
         assert main(["scores", "--course", known]) == 0
         assert capsys.readouterr().out.strip() == f"no rounds saved yet on {known}"
+
+
+@pytest.mark.parametrize("where, players, shape", [(("hazards", 8), 4, "Square"), (("meadow", 7), 3, "Triangle")])
+def test_balls_come_to_rest_against_each_other_fall_asleep_and_the_turn_passes(where, players, shape):
+    """Three or four balls stopped touching each other (a row on the ice of The Slide) never fell
+    asleep: the first to sleep was woken by a still neighbour, their clocks begun again pair by
+    pair never ran out together, and nobody could shoot again (R did not help: the round was lost)."""
+    courses, _ = load_all_courses()
+    course, hole = find_course(courses, where[0]), where[1]
+    label, ball = next((label, ball) for label, ball in CATALOGUE if label == shape)
+    session = RoundPlay(Round(course, players=[f"P{k + 1}" for k in range(players)], position=hole - 1), ball, label,
+                        "balanced")
+    golfer, idle, frames = golfer_for(session.hole.hole), 0, 0
+    try:
+        while not session.hole.finished and frames < 60 * 600:
+            if session.can_shoot:
+                idle = 0
+                assert session.shoot(*golfer.plan((session.hole.ball.x, session.hole.ball.y)))
+            idle += 1
+            asleep = [p.body.asleep for p in session.hole.players]
+            assert idle < 60 * 60, f"nobody can shoot after a minute: asleep {asleep}"
+            session.step()
+            frames += 1
+        assert session.hole.finished
+    finally:
+        session.close()

@@ -227,12 +227,15 @@ def rewind(state: np.ndarray, rows: np.ndarray, hits: np.ndarray) -> int:
 @leaf_kernel
 def wake_pairs(state: np.ndarray, pairs: np.ndarray) -> None:
     """Pair by pair, in order: if either body is at rest, wake both (a body that touches a moving one
-    is moving again)."""
+    is moving again). Their still time goes on from the lesser of the two: from zero where one was
+    moving, but where one was awake and still, from its time, so that bodies come to rest against
+    each other fall asleep together (begun again from zero pair by pair, the clocks of three balls
+    at rest in a row never ran out together: they never slept)."""
     for g in range(pairs.shape[0]):
         a, b = pairs[g, 0], pairs[g, 1]
         if state[a, ASLEEP] != 0.0 or state[b, ASLEEP] != 0.0:
             state[a, ASLEEP] = state[b, ASLEEP] = 0.0
-            state[a, STILL_TIME] = state[b, STILL_TIME] = 0.0
+            state[a, STILL_TIME] = state[b, STILL_TIME] = min(state[a, STILL_TIME], state[b, STILL_TIME])
 
 
 @leaf_kernel

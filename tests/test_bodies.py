@@ -143,6 +143,28 @@ def test_a_body_woken_by_a_touching_one_goes_on_from_the_lesser_still_time():
     assert state[:, STILL_TIME].tolist() == [0.0, 0.0, 0.5 * TIME_TO_REST, 0.5 * TIME_TO_REST]
 
 
+def test_bodies_touching_each_other_rest_together_when_all_are_still_long_enough():
+    """Rows 0-1-2 touch in a chain (2 through 1), row 3 touches only a wall (the static world, -1)
+    and row 4 is a kinematic arm touching 3: an island is held while any of its dynamic bodies is
+    not ready, and a kinematic body or a wall joins nobody."""
+    state = rows(5, vx=0.0)
+    state[4, INV_MASS] = 0.0
+    settles = np.ones(5, dtype=np.bool_)
+    state[:, STILL_TIME] = TIME_TO_REST, TIME_TO_REST, 0.5 * TIME_TO_REST, TIME_TO_REST, 0.0
+    touching = np.array([[10, 11], [11, 12], [13, -1], [13, 14]], dtype=np.int64)
+    lookup = np.array([-1] * 10 + [0, 1, 2, 3, 4], dtype=np.int64)
+    island, held = np.empty(5, dtype=np.int64), np.zeros(5, dtype=np.bool_)
+    assert motion.hold_islands(state, settles, touching, lookup, TIME_TO_REST, island, held)
+    assert held.tolist() == [True, True, True, False, False]
+    motion.move(state, settles, DT, TIME_TO_REST, held, True)
+    assert state[:, ASLEEP].tolist() == [0.0, 0.0, 0.0, 1.0, 0.0]
+    state[2, STILL_TIME] = TIME_TO_REST  # the last of the chain ready too: the three rest at once
+    assert motion.hold_islands(state, settles, touching, lookup, TIME_TO_REST, island, held)
+    motion.move(state, settles, DT, TIME_TO_REST, held, True)
+    assert state[:, ASLEEP].tolist() == [1.0, 1.0, 1.0, 1.0, 0.0]
+    assert not motion.hold_islands(state, settles, touching[2:3], lookup, TIME_TO_REST, island, held)
+
+
 def test_drag_follows_the_closed_form_and_uses_the_surface_scale_once():
     state = rows(2, vx=3.0, vy=4.0, spin=-2.0)
     state[1, DRAG_SCALE] = 5.0

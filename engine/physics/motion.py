@@ -53,21 +53,90 @@ def advance(state: np.ndarray, settles: np.ndarray, dt: float, still_step: float
     """x += v·dt for every awake body (plus the time continuous collision owes it), after putting to
     rest each dynamic body that `settles` (touching something, or slowed by drag) and has moved less
     than `still_step` and turned less than `still_turn` a substep, below `speed_cap`, for
-    `time_to_rest` seconds."""
+    `time_to_rest` seconds: each body alone (`integrate` puts bodies that touch each other to rest
+    together: `hold_islands`)."""
+    count_still(state, settles, dt, still_step, still_turn, speed_cap)
+    move(state, settles, dt, time_to_rest, settles, False)
+
+
+@leaf_kernel
+def count_still(state: np.ndarray, settles: np.ndarray, dt: float, still_step: float, still_turn: float,
+                speed_cap: float) -> None:
+    """Each awake dynamic body that `settles`: its still time grows by dt while it moves less than
+    `still_step` and turns less than `still_turn` a substep, below `speed_cap`; else it begins again."""
+    for k in range(state.shape[0]):
+        if state[k, ASLEEP] != 0.0 or state[k, INV_MASS] == 0.0 or not settles[k]:
+            continue
+        dx, dy = state[k, X] - state[k, X0], state[k, Y] - state[k, Y0]
+        vx, vy = state[k, VX], state[k, VY]
+        if (dx * dx + dy * dy < still_step * still_step and abs(state[k, ANGLE] - state[k, ANGLE0]) < still_turn
+                and vx * vx + vy * vy < speed_cap * speed_cap):
+            state[k, STILL_TIME] += dt
+        else:
+            state[k, STILL_TIME] = 0.0
+
+
+@inlined_leaf
+def _ready(state: np.ndarray, settles: np.ndarray, k: int, time_to_rest: float) -> bool:
+    """Whether awake body row k has been still long enough to rest (`count_still` has counted)."""
+    return state[k, INV_MASS] > 0.0 and settles[k] and state[k, STILL_TIME] >= time_to_rest
+
+
+@leaf_kernel
+def hold_islands(state: np.ndarray, settles: np.ndarray, touching: np.ndarray, lookup: np.ndarray,
+                 time_to_rest: float, island: np.ndarray, held: np.ndarray) -> bool:
+    """Bodies that touch each other (the contact table's entity pairs `touching`; `lookup`: entity
+    -> row) rest together, as Box2D's islands sleep: held[k] says body row k is still long enough
+    but a dynamic body it touches, directly or through others, is not yet. (Each alone, the first
+    to sleep was woken by a still neighbour, and three balls at rest in a row never slept.)
+    `island`: room for a row a body. Returns whether any two dynamic bodies touch (else `held`
+    is left as it was: nobody is held)."""
+    joined = False
+    for g in range(touching.shape[0]):
+        ea, eb = touching[g, 0], touching[g, 1]
+        if not (0 <= ea < len(lookup) and 0 <= eb < len(lookup)):
+            continue
+        a, b = lookup[ea], lookup[eb]
+        if a < 0 or b < 0 or state[a, INV_MASS] == 0.0 or state[b, INV_MASS] == 0.0:
+            continue
+        if not joined:
+            for k in range(len(island)):
+                island[k] = k
+            joined = True
+        a, b = _root(island, a), _root(island, b)
+        if a != b:
+            island[max(a, b)] = min(a, b)
+    if not joined:
+        return False
+    for k in range(len(held)):
+        held[k] = False
+    for k in range(len(island)):  # an island holds on while any awake dynamic body in it is not ready
+        if state[k, ASLEEP] == 0.0 and state[k, INV_MASS] > 0.0 and not _ready(state, settles, k, time_to_rest):
+            held[_root(island, k)] = True
+    for k in range(len(island)):
+        held[k] = held[_root(island, k)]
+    return True
+
+
+@inlined_leaf
+def _root(island: np.ndarray, k: int) -> int:
+    while island[k] != k:
+        island[k] = island[island[k]]
+        k = island[k]
+    return k
+
+
+@leaf_kernel
+def move(state: np.ndarray, settles: np.ndarray, dt: float, time_to_rest: float, held: np.ndarray,
+         holding: bool) -> None:
+    """Each awake body still long enough (`count_still`), unless `holding` and held[k]
+    (`hold_islands`), put to rest; every other awake body x += v·dt (plus what it is owed)."""
     for k in range(state.shape[0]):
         if state[k, ASLEEP] != 0.0:
             continue
-        if state[k, INV_MASS] > 0.0 and settles[k]:
-            dx, dy = state[k, X] - state[k, X0], state[k, Y] - state[k, Y0]
-            vx, vy = state[k, VX], state[k, VY]
-            if (dx * dx + dy * dy < still_step * still_step and abs(state[k, ANGLE] - state[k, ANGLE0]) < still_turn
-                    and vx * vx + vy * vy < speed_cap * speed_cap):
-                state[k, STILL_TIME] += dt
-                if state[k, STILL_TIME] >= time_to_rest:
-                    put_to_rest(state, k)
-                    continue
-            else:
-                state[k, STILL_TIME] = 0.0
+        if _ready(state, settles, k, time_to_rest) and not (holding and held[k]):
+            put_to_rest(state, k)
+            continue
         _mark_start(state, k)
         step = dt
         lag = state[k, LAG]
@@ -272,6 +341,8 @@ def _warm() -> None:
     state[:, DRAG_SCALE] = 1.0
     rows = np.arange(2, dtype=np.int64)
     advance(state, np.ones(2, dtype=np.bool_), 0.01, 0.001, 0.001, 0.1, 0.25)
+    hold_islands(state, np.ones(2, dtype=np.bool_), np.array([[0, 1]], dtype=np.int64), np.arange(2, dtype=np.int64),
+                 0.25, np.empty(2, dtype=np.int64), np.zeros(2, dtype=np.bool_))
     turn(state, 0.01)
     accelerate(state, rows, np.array([[1.0, 0.0]]), np.zeros(2, dtype=np.int64), 0.01)
     take_scale(state, rows, np.array([0.5]), np.array([0, -1], dtype=np.int64))

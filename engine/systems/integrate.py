@@ -5,7 +5,7 @@ from polygolf.engine.components import Body, Drag
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.body import Selection
 from polygolf.engine.physics.jit import leaf_kernel
-from polygolf.engine.physics.motion import advance, mark_touching
+from polygolf.engine.physics.motion import count_still, hold_islands, mark_touching, move
 from polygolf.engine.physics.settings import REST_ANGULAR, REST_LINEAR, REST_SPEED_CAP, TIME_TO_REST
 
 
@@ -31,13 +31,15 @@ class IntegrateProcessor(esper.Processor):
     def inputs(self) -> tuple:
         """What `integrate` reads besides the state, the contacts and dt: the settle mask (dragged,
         or touching something: kept between substeps), the dragged mask, whether the mask holds
-        touching bodies besides the dragged, and the store's entity lookup."""
+        touching bodies besides the dragged, the store's entity lookup, and room for the islands of
+        touching bodies (`motion.hold_islands`)."""
         state = self.bodies.gather(esper.get_component(Body))
         dragged = self._dragged.of(self.bodies, esper.get_components(Body, Drag))
         if dragged is not self._rows or len(self._inputs[1]) != len(state):
             mask = np.zeros(len(state), dtype=np.bool_)
             mask[dragged] = True
-            self._inputs = (mask.copy(), mask, np.ones(1, dtype=np.bool_), self.bodies.lookup)
+            self._inputs = (mask.copy(), mask, np.ones(1, dtype=np.bool_), self.bodies.lookup,
+                            np.empty(len(state), dtype=np.int64), np.zeros(len(state), dtype=np.bool_))
             self._rows = dragged
         return self._inputs
 
@@ -48,11 +50,14 @@ class IntegrateProcessor(esper.Processor):
 
 @leaf_kernel
 def integrate(state: np.ndarray, touching: np.ndarray, inputs: tuple, dt: float) -> None:
-    """The stage on a store's state, given this substep's contacts' entity pairs (`touching`)."""
-    settles, dragged, touched, lookup = inputs
+    """The stage on a store's state, given this substep's contacts' entity pairs (`touching`):
+    `motion.advance`, with bodies that touch each other put to rest together."""
+    settles, dragged, touched, lookup, island, held = inputs
     if len(touching) or touched[0]:
         for k in range(len(settles)):  # (a leaf copies element by element: numba's slice copy would need its counts)
             settles[k] = dragged[k]
         mark_touching(settles, touching, lookup)
         touched[0] = len(touching) > 0
-    advance(state, settles, dt, REST_LINEAR * dt, REST_ANGULAR * dt, REST_SPEED_CAP, TIME_TO_REST)
+    count_still(state, settles, dt, REST_LINEAR * dt, REST_ANGULAR * dt, REST_SPEED_CAP)
+    holding = hold_islands(state, settles, touching, lookup, TIME_TO_REST, island, held)
+    move(state, settles, dt, TIME_TO_REST, held, holding)

@@ -224,7 +224,7 @@ def _idle_inputs() -> tuple:
     ints, floats, flags = np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0, dtype=np.bool_)
     areas = Areas.of([], [])
     return (
-        (flags, flags.copy(), np.ones(1, dtype=np.bool_), ints),  # integrate
+        (flags, flags.copy(), np.ones(1, dtype=np.bool_), ints, ints.copy(), flags.copy()),  # integrate
         (ints, np.zeros((1, 2)), ints),  # gravity
         (ints, areas.verts, areas.first, areas.boxes, np.zeros((0, 2)), ints.copy()),  # slope
         (ints, areas.verts, areas.first, areas.boxes, floats, ints.copy()),  # sand

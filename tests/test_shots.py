@@ -12,6 +12,7 @@ from polygolf.engine.golf.golfer import golfer_for
 from polygolf.engine.golf.holes import find_course, load_all_courses
 from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.golf.shots import Shot, fan, simulate_shots
+from polygolf.engine.golf.world import DEFAULT_BALL
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.physics.jit import compile_kernels
 from polygolf.engine.physics.settings import LINEAR_SLOP
@@ -67,6 +68,19 @@ def test_a_ball_the_windmill_meets_ends_as_alone_beside_a_faster_ball(courses):
         nudge = Shot(start, (0.05 * math.cos(angle), 0.05 * math.sin(angle)))
         result, _ = simulate_shots(hole, [nudge, Shot(hole.layout.tee, (3.0, 0.3))], "fast", shape=hexagon)
         assert (result.rest, result.holed, result.penalties) == _alone(hole, hexagon, nudge, "fast")
+
+
+def test_balls_of_a_fan_that_meet_the_arm_together_end_as_each_alone(courses):
+    """Two shots at the windmill, both balls on its arm in the same frames: each ends as when alone.
+    (The arm counted the other ball as something that might halt it, and passed a push from one ball
+    on to the next: the second shot ended 2 m away from where it ends alone.)"""
+    windmill = find_course(courses, "hazards").holes[5]
+    a = Shot((3.0, 3.0), (2.9313856079563725, -0.6379486009595522))
+    b = Shot((3.0, 3.0), (2.866009467376818, -0.8865606199840186))
+    alone = simulate_shots(windmill, [a], "fast")[0]
+    beside = simulate_shots(windmill, [b, a], "fast")[1]
+    assert (beside.rest, beside.angle, beside.seconds) == (alone.rest, alone.angle, alone.seconds)
+    assert alone.rest == _alone(windmill, DEFAULT_BALL, a, "fast")[0]
 
 
 def test_a_planned_putt_drops_and_says_when(courses):

@@ -536,7 +536,11 @@ def pairs_apart(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.nda
     wider than GAP_TOLERANCE and `pair_reaches` says the two would not close it this substep (a body
     may be halted if it has something else near: another pair, or a wall: q in `near_walls`), unless a push
     can reach it through a chain of pairs that do touch. `pressed[q]`: the body is in a pair that
-    touches (or is pushed through such a chain)."""
+    touches (or is pushed through such a chain).
+
+    A kinematic body (a windmill's arm) is never halted by what it meets and passes no push on: each
+    ball that meets it is judged as if alone with it (in a fan of shots, the other balls that met
+    the arm changed a shot's contacts, and it ended elsewhere than played alone)."""
     busy = np.zeros(len(rows), dtype=np.int64)
     work = toi_work(widest(first))
     pose_a, vel_a, pose_b, vel_b = np.empty(3), np.empty(3), np.empty(3), np.empty(3)
@@ -560,19 +564,28 @@ def pairs_apart(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.nda
         apart[g] = not pair_reaches(
             lv, ln, first[pa0:pa1 + 1], reach[pa0:pa1], radius[a], pose_a, vel_a,
             lv, ln, first[pb0:pb1 + 1], reach[pb0:pb1], radius[b], pose_b, vel_b,
-            dt, gaps[g], busy[a] > 1, busy[b] > 1, work)
+            dt, gaps[g], busy[a] > 1 and state[ka, INV_MASS] > 0.0, busy[b] > 1 and state[kb, INV_MASS] > 0.0, work)
     pressed[:] = False
     grew = False
     for g in range(len(pairs)):
         if not apart[g]:
-            pressed[pairs[g, 0]] = pressed[pairs[g, 1]] = True
-            grew = True
+            grew |= _press(state, rows, pressed, pairs[g, 0]) | _press(state, rows, pressed, pairs[g, 1])
     while grew:  # through a chain of gaps, a push can reach: keep those contacts too
         grew = False
         for g in range(len(pairs)):
             if apart[g] and (pressed[pairs[g, 0]] or pressed[pairs[g, 1]]):
                 apart[g], grew = False, True
-                pressed[pairs[g, 0]] = pressed[pairs[g, 1]] = True
+                _press(state, rows, pressed, pairs[g, 0])
+                _press(state, rows, pressed, pairs[g, 1])
+
+
+@inlined_leaf
+def _press(state: np.ndarray, rows: np.ndarray, pressed: np.ndarray, q: int) -> bool:
+    """Mark body q pressed, if it is dynamic (a push goes through it); returns whether it was marked."""
+    if state[rows[q], INV_MASS] == 0.0:
+        return False
+    pressed[q] = True
+    return True
 
 
 @warm_up("continuous collision")

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import importlib.util
+import itertools
 import json
 import math
 import os
@@ -292,16 +293,28 @@ def _play(args: argparse.Namespace) -> int:
 
 
 def _keep_aside(path: Path, text: str) -> Path | None:
-    """An author's file about to be written over with other text is renamed to FILE.bak first (the
-    one before it there goes); returns that name, or None when nothing is lost."""
+    """An author's file about to be written over with other text is renamed to FILE.bak first (or
+    FILE.bak2, FILE.bak3...: a backup already there is kept too); returns that name, or None when
+    nothing would be lost."""
     try:
         if path.read_text(encoding="utf-8", errors="replace") == text:
             return None
     except FileNotFoundError:
         return None
-    kept = path.with_name(path.name + ".bak")
-    path.replace(kept)
-    return kept
+    for n in itertools.count(1):
+        kept = path.with_name(f"{path.name}.bak{n if n > 1 else ''}")
+        try:
+            os.link(path, kept)  # (a name taken, even by another process meanwhile, is never written over)
+        except FileExistsError:
+            continue
+        except OSError:  # no hard links here (FAT, say): a rename, to a name free a moment ago
+            if kept.exists():
+                continue
+            path.rename(kept)
+            return kept
+        path.unlink()
+        return kept
+    raise AssertionError("unreachable")
 
 
 def _generate(args: argparse.Namespace) -> int:

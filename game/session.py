@@ -355,8 +355,9 @@ class RoundPlay:
                 if self.can_shoot and not self.shoot(*plan(self.hole)):
                     self.restart()  # the plan cannot move the ball: take the penalty rather than loop
                 self.step()
-            if not self.hole.finished:
-                raise RuntimeError(f"hole {self.round.number} did not finish in {max_frames} frames")
+            if not self.hole.finished:  # (content: a ball that never rests, say; its hole passed validation)
+                raise ValueError(f"{self.round.course.name}: hole {self.round.number} did not finish in "
+                                 f"{max_frames / 60:.0f} s of play (a ball never came to rest); the round is not saved")
             self.finish_hole()
             self.start_hole()
 

@@ -219,6 +219,10 @@ def test_generate_over_an_authors_file_keeps_it_as_bak(tmp_path, monkeypatch, ca
     assert main(["generate", "--seed", "77", "--out", str(out)]) == 0  # the same text again: nothing to keep
     assert "kept as" not in capsys.readouterr().err
     assert out.read_text() == made and (tmp_path / "mine.yaml.bak").read_text() == "name: My own\n"
+    assert main(["generate", "--seed", "78", "--out", str(out)]) == 0  # another hole: the backup stays too
+    assert capsys.readouterr().err.strip().splitlines()[-1].endswith(f"kept as {out}.bak2")
+    assert (tmp_path / "mine.yaml.bak").read_text() == "name: My own\n"
+    assert (tmp_path / "mine.yaml.bak2").read_text() == made
 
 
 @pytest.mark.parametrize("args, message", [

@@ -118,6 +118,7 @@ def load_courses(path: str | Path | None = None, library: TileLibrary | None = N
     spec = validate(CoursesFile, data, lines, path)
     courses = []
     seen = {RANDOM_NINE_ID: "Random nine", **{taken_id: "a course of another content folder" for taken_id in taken}}
+    read: dict[str, Hole | ContentError] = {}  # each hole file once, however many times the courses list it
     for c, course in enumerate(spec.courses):
         loaded = Course(id=course.name.lower().replace(" ", "-"), name=course.name)
         if any(mark in course.name for mark in ":/\\"):
@@ -137,10 +138,12 @@ def load_courses(path: str | Path | None = None, library: TileLibrary | None = N
                 loaded.holes.append(ContentError(path, line_of(loc, lines), format_loc(loc),
                                                  f"no hole file {hole_path.name}"))
                 continue
-            try:
-                loaded.holes.append(load_hole(hole_path, library))
-            except ContentError as exc:
-                loaded.holes.append(exc)
+            if hole_id not in read:
+                try:
+                    read[hole_id] = load_hole(hole_path, library)
+                except ContentError as exc:
+                    read[hole_id] = exc
+            loaded.holes.append(read[hole_id])
         courses.append(loaded)
     return courses
 

@@ -26,13 +26,14 @@ from polygolf.engine.golf.generate import Prove, generate, golfer_proof, schema_
 from polygolf.engine.golf.holes import RANDOM_NINE_ID, Course, load_courses, load_hole
 from polygolf.engine.loading.course import TileLibrary, load_library
 from polygolf.engine.loading.paths import data_dir, exclusive
-from polygolf.engine.loading.yamlsource import ContentError
+from polygolf.engine.loading.yamlsource import ContentError, read_at_most
 
 GENERATOR_VERSION = 1  # bump when the same seed would draw other holes
 NINE = 9
 NINE_KNOBS = "fast"  # the preset the holes are proven at (play is at any preset)
 NINE_EFFORT = "quick"
 COURSE_ID = RANDOM_NINE_ID  # the choice's name on the command line and in the settings
+MAX_MANIFEST_BYTES = 1_000_000  # nine.json: a few hundred bytes as the game writes it
 SEED_RANGE = (1, 99_999)  # new seeds are short enough to read out to a friend
 
 
@@ -67,9 +68,10 @@ def _manifest(seed: int, library: TileLibrary) -> dict:
 
 
 def _read_manifest(folder: Path) -> dict | None:
-    try:
-        data = json.loads((folder / "nine.json").read_text(encoding="utf-8"))
-    except (OSError, ValueError, RecursionError):  # missing, not JSON, nested too deep
+    try:  # (as content files are read: a FIFO or a device in its place is not waited on or read for ever)
+        text = read_at_most(folder / "nine.json", MAX_MANIFEST_BYTES)
+        data = json.loads(text) if len(text) <= MAX_MANIFEST_BYTES else None
+    except (OSError, ValueError, RecursionError):  # missing, not a file, not JSON, nested too deep
         return None
     return data if isinstance(data, dict) and isinstance(data.get("holes"), dict) else None
 

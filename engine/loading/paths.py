@@ -10,6 +10,7 @@ added to the shipped ones. User data (DATA): the platform's user data folder (pl
 from __future__ import annotations
 
 import os
+import stat
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -75,9 +76,14 @@ def exclusive(path: Path, waiting: Callable[[], None] | None = None) -> Iterator
     try:
         import fcntl
 
-        # (A link in its place is not followed: the lock never makes or opens a file elsewhere.)
-        handle = os.fdopen(os.open(path, os.O_WRONLY | os.O_APPEND | os.O_CREAT | getattr(os, "O_NOFOLLOW", 0), 0o644),
-                           "a")
+        # A link in its place is not followed (the lock never makes or opens a file elsewhere), and
+        # opening does not wait (a FIFO there would wait for a reader for ever: it is no lock file).
+        flags = os.O_WRONLY | os.O_APPEND | os.O_CREAT | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0)
+        fd = os.open(path, flags, 0o644)
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            os.close(fd)
+            raise OSError(f"{path}: not a regular file")
+        handle = os.fdopen(fd, "a")
     except (ImportError, OSError):
         yield
         return

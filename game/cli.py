@@ -389,6 +389,9 @@ def _autoplay(args: argparse.Namespace) -> int:
     launched = [k for k, hole in enumerate(course.holes, 1) if isinstance(hole, Hole) and launches(hole)]
     if launched:
         raise ValueError(f"{course.name}: hole {launched[0]} {LAUNCHES}")
+    for problem in course.holes:  # (the round plays on without them, as in the game: said here as `par` says it)
+        if isinstance(problem, ContentError):
+            print(f"polygolf: skipped: {problem}", file=sys.stderr)
     game.courses, game.course_index = [course], 0  # this round's course, not saved as the menu's choice
     game.players = player_names(args.players, args.names) or ["Golfer"]
     if args.shape is not None:
@@ -669,6 +672,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         return run(args)
     except ContentError as exc:
         print(f"polygolf: {exc}", file=sys.stderr)
+        return EXIT_CONTENT
+    except UnicodeError as exc:  # (a ValueError whose first word is only the codec's name)
+        print(f"polygolf: {exc.reason}: {exc.object[exc.start:exc.end]!r} is not text ({exc.encoding})"
+              if isinstance(exc, (UnicodeEncodeError, UnicodeDecodeError)) else f"polygolf: {exc}", file=sys.stderr)
         return EXIT_CONTENT
     except (KeyError, ValueError) as exc:  # unknown course, theme, shape, hole number
         print(f"polygolf: {exc.args[0] if exc.args else exc}", file=sys.stderr)

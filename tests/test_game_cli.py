@@ -114,3 +114,10 @@ def test_a_collision_test_is_not_proven_the_golfer_cannot_play_it(capsys):
                    "cannot play it\n")
     assert main(["validate", "--prove", str(ROOT_SCENES.parent / "holes" / "collision-test.yaml")]) == 0
     assert capsys.readouterr().out == "1 file checked, 0 problems, 0 warnings\n"
+
+
+def test_an_argument_that_is_not_text_is_one_line(capsys):
+    from polygolf.game.cli import main
+
+    assert main(["scores", "--course", "\udcff\udcfe"]) == 2
+    assert capsys.readouterr().err == "polygolf: surrogates not allowed: '\\udcff\\udcfe' is not text (utf-8)\n"

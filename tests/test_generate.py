@@ -522,3 +522,22 @@ def test_the_build_lock_does_not_follow_a_link_in_its_place(tmp_path):
     with exclusive(tmp_path / ".building", lambda: None):
         ran.append(True)
     assert ran and not target.exists()
+
+
+def test_a_fifo_where_a_lock_or_the_manifest_goes_is_not_waited_on(tmp_path):
+    import os
+
+    from polygolf.engine.loading.paths import exclusive
+
+    os.mkfifo(tmp_path / ".building")
+    os.mkfifo(tmp_path / "nine.json")
+    done = []
+
+    def both() -> None:
+        with exclusive(tmp_path / ".building", lambda: None):
+            done.append(nine._read_manifest(tmp_path))
+
+    worker = threading.Thread(target=both, daemon=True)
+    worker.start()
+    worker.join(5.0)
+    assert done == [None]  # (it hung: opening a FIFO waits for the other end)

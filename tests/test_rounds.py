@@ -586,3 +586,48 @@ def test_balls_come_to_rest_against_each_other_fall_asleep_and_the_turn_passes(w
         assert session.hole.finished
     finally:
         session.close()
+
+
+def test_a_courses_file_that_lists_a_hole_many_times_reads_it_once(tmp_path, monkeypatch):
+    """500 mentions of a 400-tile hole held the game's start for minutes: each was read and laid out."""
+    import shutil
+
+    from polygolf.engine.golf import holes as holes_module
+    from polygolf.engine.loading.paths import HOLES_DIR
+
+    shutil.copy(HOLES_DIR / "straight.yaml", tmp_path / "straight.yaml")
+    (tmp_path / "courses.yaml").write_text("courses:\n" + "".join(
+        f"  - name: Course {c}\n    holes: [{', '.join(['straight'] * 400)}]\n" for c in range(3)))
+    reads = []
+    real = holes_module.load_hole
+    monkeypatch.setattr(holes_module, "load_hole", lambda *args: reads.append(args) or real(*args))
+    courses = holes_module.load_courses(tmp_path / "courses.yaml")
+    assert len(reads) == 1 and [len(c.holes) for c in courses] == [400, 400, 400]
+    assert all(hole.id == "straight" for c in courses for hole in c.holes)
+
+
+def test_a_round_whose_hole_never_ends_is_one_line_not_a_traceback(capsys):
+    courses, _ = load_all_courses()
+    session = RoundPlay(Round(find_course(courses, "sandbox"), players=["Ann"]), PENTAGON, "Pentagon", "fast")
+    try:
+        with pytest.raises(ValueError, match=r"^Sandbox: hole 1 did not finish in 0 s of play \(a ball never came "
+                                             r"to rest\); the round is not saved$"):
+            session.play_out(lambda hole: ((hole.ball.x, hole.ball.y), (0.5, 0.0)), max_frames=2)
+    finally:
+        session.close()
+
+
+def test_autoplay_says_which_holes_of_its_course_it_passes_over(capsys):
+    import shutil
+
+    from polygolf.engine.loading.paths import HOLES_DIR
+
+    mine = data_dir() / "content" / "holes"
+    mine.mkdir(parents=True)
+    shutil.copy(HOLES_DIR / "straight.yaml", mine / "good.yaml")
+    (mine / "bad.yaml").write_text("name: Bad\npar: 2\ntiles: [\n")
+    (mine / "courses.yaml").write_text("courses:\n  - name: Mine\n    holes: [good, bad, missing]\n")
+    assert main(["autoplay", "--course", "mine", "--preset", "fast"]) == 0
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err[0].startswith(f"polygolf: skipped: {mine / 'bad.yaml'}:4: (yaml): ")
+    assert err[1] == f"polygolf: skipped: {mine / 'courses.yaml'}:3: courses[0].holes[2]: no hole file missing.yaml"

@@ -314,6 +314,22 @@ def test_settings_are_kept_between_launches(courses):
         (game.theme.name, game.shape_label, ["Player 1", "Player 2"], True)
 
 
+def test_a_seat_added_is_named_by_its_own_number_whatever_the_first_is_called(courses):
+    """Player 1 named Ann, then Players clicked: seat 2 was called "Player 1" (on the HUD, the card
+    and the bests)."""
+    game = Game.load()
+    game.set_names(["Ann"])
+    seen = []
+    for _ in range(4):
+        game.next_player_count()
+        seen.append(list(game.players))
+    assert seen == [["Ann", "Player 2"], ["Ann", "Player 2", "Player 3"], ["Ann", "Player 2", "Player 3", "Player 4"],
+                    ["Ann"]]
+    game.set_names(["Player 2"])
+    game.next_player_count()
+    assert game.players == ["Player 2", "Player 1"]  # (its own number taken: the first free one)
+
+
 def test_the_command_lines_choices_are_for_that_launch_and_the_menus_are_kept(courses):
     """`render --theme sand`, `play --course hazards --shape star-5-2` choose for that launch only:
     saving another setting keeps what was saved for them, until the menu makes that choice again.

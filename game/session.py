@@ -534,9 +534,11 @@ class Game:
     def next_player_count(self) -> None:
         """1, 2, 3, 4, 1 ... players (names kept for the seats that stay)."""
         count = len(self.players) % MAX_PLAYERS + 1
-        self.players = (self.players + default_names(MAX_PLAYERS))[:count] if count > 1 else self.players[:1]
-        self.players = [name if name not in self.players[:k] else f"Player {k + 1}"
-                        for k, name in enumerate(self.players)]
+        players = self.players[:count]
+        for seat in range(len(players), count):  # a new seat: "Player N" for its own number N, if free
+            players.append(next(name for name in [f"Player {seat + 1}", *default_names(2 * MAX_PLAYERS)]
+                                if name not in players))
+        self.players = players
         self.save_settings("players")
 
     def set_names(self, names: list[str]) -> None:

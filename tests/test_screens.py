@@ -250,6 +250,17 @@ def test_the_window_resizes_and_the_hole_still_fits(window, game, shots_dir):
     send(window, "on_resize", 1280, 720)
 
 
+def test_the_end_of_hole_message_is_centred_again_after_a_resize(window, game):
+    """It was placed once, where the window's middle was when it first showed: after the window
+    shrank it sat on the cup, or off the window."""
+    from polygolf.game.views.play import HUD_HEIGHT
+
+    play = show(window, PlayView(game, game.start_round(), ScreenFlow(window, game)))
+    play.draw_finish_message(1024, 700)
+    play.draw_finish_message(800, 600)
+    assert play.finish_text.position == (400, (600 - HUD_HEIGHT) / 2)
+
+
 def test_f3_overlay_shows_each_systems_cost_and_keys_switch_the_preset(window, game, shots_dir):
     play = show(window, PlayView(game, game.start_round(), ScreenFlow(window, game)))
     key(window, arcade.key.F3)

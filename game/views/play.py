@@ -603,4 +603,6 @@ class PlayView(arcade.View):
                 words = "Hole over"
             self.finish_text = arcade.Text(words, w / 2, (h - HUD_HEIGHT) / 2, self.game.theme.rgba("text"), 36,
                                            anchor_x="center", anchor_y="center", bold=True)
+        if self.finish_text.position != (w / 2, (h - HUD_HEIGHT) / 2):  # (the window changed size since)
+            self.finish_text.position = (w / 2, (h - HUD_HEIGHT) / 2)
         draw_backed(self.finish_text, self.game.theme.rgba("panel"), pad=24.0)

@@ -423,9 +423,9 @@ class Game:
     def settings(self) -> dict[str, object]:
         return {"theme": self.theme.name, "shape": {"label": self.shape_label, "spec": self.shape.model_dump(
             mode="json", exclude_none=True)}, "course": RANDOM_NINE if self.random_chosen else self.course.id,
-            "players": self.players, "volume": self.sound.volume, "guide_seen": self.guide_seen,
-            "hint": self.hint, "preview": self.preview, "computer_skill": self.computer_skill,
-            "random_seed": self.random_seed}
+            "players": self.players, "volume": self.sound.volume, "muted": self.sound.muted,
+            "guide_seen": self.guide_seen, "hint": self.hint, "preview": self.preview,
+            "computer_skill": self.computer_skill, "random_seed": self.random_seed}
 
     def apply_settings(self, saved: dict[str, object]) -> None:
         """Take what was saved; a value that no longer fits (a theme or course gone) is left at its default."""
@@ -454,6 +454,8 @@ class Game:
         volume = saved.get("volume")
         if isinstance(volume, int | float) and 0.0 <= volume <= 1.0:
             self.sound.volume = float(volume)  # the sound board's volume is the one setting
+        if isinstance(saved.get("muted"), bool):
+            self.sound.muted = saved["muted"]
         self.guide_seen = saved.get("guide_seen") is True
         self.hint = _one_of(saved.get("hint"), HINTS) or self.hint
         self.preview = saved["preview"] if isinstance(saved.get("preview"), bool) else self.preview
@@ -554,8 +556,14 @@ class Game:
 
     def next_volume(self) -> None:
         """The menu's Sound: the next volume step (unmuting), kept for the next launch."""
+        muted = self.sound.muted
         self.sound.next_volume()
-        self.save_settings("volume")
+        self.save_settings("volume", *(("muted",) if muted else ()))
+
+    def toggle_mute(self) -> None:
+        """M: sound off or back on, kept for the next launch (the volume stays as it was)."""
+        self.sound.toggle_mute()
+        self.save_settings("muted")
 
     def toggle_preview(self) -> None:
         self.preview = not self.preview

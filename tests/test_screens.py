@@ -426,6 +426,11 @@ def test_menu_clicks_and_the_volume_button_are_heard(window, game):
     key(window, arcade.key.M)
     click(window, "shape")
     assert len(player.played) == 2 and game.sound.muted
+    assert window.current_view.buttons["volume"].text == "Sound: off"  # (it still said 75% while muted)
+    again = Game.load()
+    assert again.sound.muted and again.sound.volume == 0.75  # kept for the next launch, as the volume is
+    key(window, arcade.key.M)
+    assert not Game.load().sound.muted and window.current_view.buttons["volume"].text == "Sound: 75%"
 
 
 def test_zoom_keeps_the_point_under_the_pointer_and_right_drag_pans(window, game):

@@ -274,6 +274,8 @@ class MenuView(UIView):
 
     def on_key_press(self, symbol: int, modifiers: int) -> None:
         if window_key(self.window, self.game, symbol):
+            if symbol == arcade.key.M:
+                self.build()  # (the Sound button says "off" while muted)
             return
         if symbol in (arcade.key.ENTER, arcade.key.RETURN, arcade.key.SPACE):
             self.on_play()

@@ -50,6 +50,6 @@ def window_key(window: arcade.Window, game: Game, symbol: int) -> bool:
         window.set_fullscreen(not window.fullscreen)
         return True
     if symbol == arcade.key.M:
-        game.sound.toggle_mute()
+        game.toggle_mute()
         return True
     return False

@@ -204,11 +204,16 @@ def test_a_database_broken_between_launches_costs_one_line_and_the_round_is_kept
 def test_a_recorded_round_is_shown_hole_by_hole_then_its_scorecard(window, shots_dir):  # noqa: F811
     from polygolf.game.cli import main
     from polygolf.game.replay import replay_session
+    from polygolf.game.sound import SoundBoard
+
+    from .test_sound import RecordingPlayer
 
     assert main(["autoplay", "--course", "sandbox", "--players", "2", "--preset", "fast"]) == 0
     replay, = (data_dir() / "replays").glob("*.json")
     record, course = load_for_replay(replay)
     game = Game.load()
+    heard = RecordingPlayer()
+    game.sound = SoundBoard(heard)
     session = replay_session(record, course)
     ScreenFlow(window, game).watch_round(record, session)
     view = window.current_view
@@ -224,6 +229,8 @@ def test_a_recorded_round_is_shown_hole_by_hole_then_its_scorecard(window, shots
             assert_not_blank(snapshot(window, shots_dir, "replay-round"), "replay")
     results = window.current_view
     assert isinstance(results, ResultsView) and holes_seen == {1, 2, 3}
+    sounds = [name for name, _ in heard.played]
+    assert sounds.count("hit") >= 6 and sounds.count("drop") == 6, sounds  # as it sounded played (it was silent)
     assert [[r.strokes for r in card] for card in results.round.cards] == \
         [[h.final[seat].strokes + h.final[seat].penalties for h in record.holes] for seat in (0, 1)]
 

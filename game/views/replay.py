@@ -46,6 +46,8 @@ class ReplayView(arcade.View):
                                 anchor_y="center")
         self.message = arcade.Text("", 0, 0, theme.rgba("text"), 30, anchor_x="center", anchor_y="center", bold=True)
         session.step(max(0, from_frame - session.frame))
+        if session.hole is not None:
+            session.hole.drain_events()  # (what happened before the part shown is not heard)
         self.show_hole()
 
     def show_hole(self) -> None:
@@ -96,6 +98,7 @@ class ReplayView(arcade.View):
             return
         if not self.at_end():
             session.step(4 if self.fast else 1)
+            self.game.sound.hear(*session.hole.drain_events(), delta_time)  # it sounds as it did when played
             if self.last_frame is None and session.frame > self.last_input_frame() + OVERRUN:
                 self.message_text = "This replay is out of step with the game"
                 self.last_frame = session.frame  # stop here

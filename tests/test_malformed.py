@@ -665,3 +665,24 @@ def test_numbers_with_an_exponent_and_no_dot_are_numbers(tmp_path, capsys):
         assert main(["simulate", str(place(tmp_path / folder, "scene", scene)), "--seconds", "0.1", "--json"]) == 0
         results.append(json.loads(capsys.readouterr().out)["bodies"])
     assert results[0] == results[1]
+
+
+@pytest.mark.parametrize("middle", ["{at: [1, 0], borders: {e: {gate: 0.3}, w: open}}",
+                                    "{at: [1, 0], borders: open-ew, pattern: wall-across}"])
+def test_a_hole_whose_cup_no_ball_can_reach_is_refused_by_validate(tmp_path, capsys, middle):
+    """Open borders all the way, but a gate narrower than the ball, or a wall across the corridor:
+    validate passed it, and only par found it could not be sunk."""
+    import shutil
+
+    from polygolf.engine.loading.paths import HOLES_DIR
+
+    library = (HOLES_DIR / "tiles.yaml").read_text()
+    (tmp_path / "tiles.yaml").write_text(library.replace(
+        "patterns:\n", "patterns:\n  wall-across:\n    - box: {center: [0, 0], half: [0.2, 3]}\n", 1))
+    shutil.copy(HOLES_DIR / "straight.yaml", tmp_path / "fine.yaml")
+    (tmp_path / "shut.yaml").write_text("name: Shut\npar: 2\ntiles:\n  - {at: [0, 0], borders: open-e}\n"
+                                        f"  - {middle}\n  - {{at: [2, 0], borders: open-w}}\n")
+    assert main(["validate", str(tmp_path / "fine.yaml"), str(tmp_path / "shut.yaml")]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f"{tmp_path / 'shut.yaml'}:6: tiles[2]: the cup cannot be reached from the tee: walls, gates or "
+                   "water close every way for a ball 0.9 m across"]

@@ -2,14 +2,15 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable
 from pathlib import Path
 
-from polygolf.engine.golf.holes import load_courses, load_hole_file
+from polygolf.engine.golf.holes import Hole, load_courses, load_hole_file
 from polygolf.engine.loading.course import load_library
 from polygolf.engine.loading.paths import content_roots
 from polygolf.engine.loading.scene import load_scene
-from polygolf.engine.loading.yamlsource import ContentError, load_yaml
+from polygolf.engine.loading.yamlsource import ContentError, format_loc, line_of, load_yaml
 from polygolf.game.theme import check_name_free, load_theme, themes_before
 
 
@@ -24,7 +25,7 @@ def check_file(path: Path) -> list[ContentError]:
             return [p for c in load_courses(path, taken=_taken_before(path)) for h in c.holes
                     if isinstance(h, ContentError) for p in h.problems]
         elif kind == "hole":
-            load_hole_file(path)
+            return _unreachable(path, load_hole_file(path))
         elif kind == "scene":
             load_scene(path)
         elif kind == "theme":
@@ -35,6 +36,23 @@ def check_file(path: Path) -> list[ContentError]:
     except ContentError as exc:
         return exc.problems
     return []
+
+
+def _unreachable(path: Path, hole: Hole) -> list[ContentError]:
+    """The hole's cup out of a ball's reach from its tee along the green (the search golfer's route
+    map: where the ball fits between walls, out of water), for all its open borders: an obstacle
+    or a gate narrower than the ball closing the way. (Validation's own, not loading's: the
+    game's start does not pay for a route map of every hole.)"""
+    from polygolf.engine.golf.search import RouteMap
+
+    layout = hole.layout
+    if hole.spec.launch is not None or math.isfinite(RouteMap(layout, hole.library.ball.radius)(*layout.tee)):
+        return []
+    _, lines = load_yaml(path)
+    loc = ("tiles", len(hole.spec.tiles) - 1)
+    return [ContentError(path, line_of(loc, lines), format_loc(loc),
+                         f"the cup cannot be reached from the tee: walls, gates or water close every way for a ball "
+                         f"{2 * hole.library.ball.radius:g} m across")]
 
 
 def _taken_before(path: Path) -> list[str]:

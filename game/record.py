@@ -17,7 +17,7 @@ from functools import cache
 from pathlib import Path
 from typing import Annotated, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field, ValidationError
 
 from polygolf.engine.golf.holes import Course, Hole
 from polygolf.engine.loading.scene import ShapeSpec
@@ -30,7 +30,20 @@ MAX_REPLAY_BYTES = 16 * 1024 * 1024
 MAX_FILE_COURSE = 60  # characters of the course id in a replay's file name
 MAX_INT_DIGITS = 20  # with a sign: every count in a replay is far smaller
 MAX_HOLE_FRAMES = 60 * 60 * 60  # an hour of play on one hole: more is not a round, and would take long to check
-Frame = Annotated[int, Field(ge=0, le=MAX_HOLE_FRAMES)]
+# Numbers as JSON writes them, no other type taken for one ("0", true, "nan" and "1e999" are not a frame or
+# a coordinate), and finite.
+Count = Annotated[int, Field(strict=True)]
+Frame = Annotated[int, Field(ge=0, le=MAX_HOLE_FRAMES, strict=True)]
+Number = Annotated[float, Field(strict=True, allow_inf_nan=False)]
+
+
+def _printable(name: str) -> str:
+    if not name.isprintable():
+        raise ValueError("a player's name is printable text on one line")
+    return name
+
+
+PlayerName = Annotated[str, Field(min_length=1, max_length=100), AfterValidator(_printable)]
 
 
 class ReplayError(ValueError):
@@ -47,24 +60,24 @@ class Input(_Strict):
 
     frame: Frame
     kind: Literal["shot", "restart", "preset"]
-    player: Annotated[int, Field(ge=0, le=3)] = 0
-    grab: tuple[float, float] | None = None
-    arrow: tuple[float, float] | None = None
+    player: Annotated[int, Field(ge=0, le=3, strict=True)] = 0
+    grab: tuple[Number, Number] | None = None
+    arrow: tuple[Number, Number] | None = None
     preset: Literal["fast", "balanced", "accurate"] | None = None
 
 
 class BallEnd(_Strict):
     """How one player's ball ended a hole: its score and its body's state, to compare bit for bit."""
 
-    strokes: int
-    penalties: int
-    holed: bool
-    picked_up: bool
-    body: tuple[float, float, float, float, float, float]  # x, y, angle, vx, vy, spin
+    strokes: Count
+    penalties: Count
+    holed: Annotated[bool, Field(strict=True)]
+    picked_up: Annotated[bool, Field(strict=True)]
+    body: tuple[Number, Number, Number, Number, Number, Number]  # x, y, angle, vx, vy, spin
 
 
 class HoleRecord(_Strict):
-    position: Annotated[int, Field(ge=0)]  # index of the hole in its course
+    position: Annotated[int, Field(ge=0, strict=True)]  # index of the hole in its course
     hole: str  # the hole's id (file name), to say which hole a mismatch is on
     preset: Literal["fast", "balanced", "accurate"]  # at the hole's start
     inputs: list[Input] = []
@@ -84,8 +97,8 @@ class RoundRecord(_Strict):
     shape_label: str
     shape: ShapeSpec
     preset: Literal["fast", "balanced", "accurate"]
-    players: Annotated[list[Annotated[str, Field(min_length=1, max_length=100)]], Field(min_length=1, max_length=4)]
-    start_at: Annotated[int, Field(ge=0)] = 0
+    players: Annotated[list[PlayerName], Field(min_length=1, max_length=4)]
+    start_at: Annotated[int, Field(ge=0, strict=True)] = 0
     holes: list[HoleRecord] = []
 
     def save(self, folder: Path) -> Path:
@@ -174,7 +187,7 @@ def load_record(path: Path) -> RoundRecord:
     except ValidationError as exc:
         error = exc.errors(include_url=False)[0]
         where = ".".join(str(part) for part in error["loc"]) or "(top)"
-        raise ReplayError(f"{path}: {where}: {error['msg']}") from None
+        raise ReplayError(f"{path}: {where}: {error['msg'].removeprefix('Value error, ')}") from None
 
 
 def hole_fingerprint(hole: Hole) -> str:

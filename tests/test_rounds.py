@@ -249,6 +249,34 @@ def test_a_replay_of_json_no_round_holds_is_not_a_replay(tmp_path, capsys, text)
     assert len(err) == 1 and err[0].startswith(f"polygolf: {path}: not a replay ("), err
 
 
+@pytest.mark.parametrize(("edit", "where"), [
+    (lambda r: r["holes"][0]["inputs"][0].update(grab=["nan", "nan"]), "holes.0.inputs.0.grab.0"),
+    (lambda r: r["holes"][0]["inputs"][0].update(arrow=["1e999", "0"]), "holes.0.inputs.0.arrow.0"),
+    (lambda r: r["holes"][0]["inputs"][0].update(frame="0"), "holes.0.inputs.0.frame"),
+    (lambda r: r["holes"][0]["inputs"][0].update(frame=True), "holes.0.inputs.0.frame"),
+    (lambda r: r["holes"][0]["final"][0].update(body=["inf", 0, 0, 0, 0, 0]), "holes.0.final.0.body.0"),
+    (lambda r: r.update(players=["a\nb"]), "players.0"),
+], ids=["nan-text", "overflow-text", "frame-text", "frame-bool", "body-inf-text", "name-control"])
+def test_a_replay_whose_numbers_are_text_or_not_finite_is_not_read(tmp_path, capsys, edit, where):
+    """Pydantic's lax mode read "nan", "1e999", "0" and true as numbers and fed them to the
+    simulation (exit 1, or 0 for a frame of "0"); a name with a line break went onto the card."""
+    record = RoundRecord(recorded_at="2026-11-27T04:00:00", course="sandbox", course_name="Sandbox", fingerprint="f",
+                         shape_label="Pentagon", shape=PENTAGON, preset="fast", players=["Ann"],
+                         holes=[{"position": 0, "hole": "warm-up", "preset": "fast", "frames": 90,
+                                 "inputs": [{"frame": 0, "kind": "shot", "grab": [1.0, 2.0], "arrow": [0.5, 0.0]}],
+                                 "final": [{"strokes": 1, "penalties": 0, "holed": True, "picked_up": False,
+                                            "body": [1.0, 2.0, 0.0, 0.0, 0.0, 0.0]}]}])
+    data = record.model_dump(mode="json")
+    path = tmp_path / "edited.json"
+    path.write_text(json.dumps(data))
+    load_record(path)  # (as written, it reads)
+    edit(data)
+    path.write_text(json.dumps(data))
+    assert main(["replay", str(path), "--verify"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(f"polygolf: {path}: {where}: "), err
+
+
 def _save_replays(folder: Path, player: str, start, count: int, out) -> None:
     """(A process of the test below.) `count` rounds of one second and course saved by `player`."""
     start.wait()

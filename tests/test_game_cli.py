@@ -121,3 +121,15 @@ def test_an_argument_that_is_not_text_is_one_line(capsys):
 
     assert main(["scores", "--course", "\udcff\udcfe"]) == 2
     assert capsys.readouterr().err == "polygolf: surrogates not allowed: '\\udcff\\udcfe' is not text (utf-8)\n"
+
+
+def test_the_par_table_keeps_a_long_hole_id_apart_from_its_name():
+    from polygolf.engine.golf.search import HoleProof
+    from polygolf.game.tools.par import table
+
+    proofs = [HoleProof("blocked_by_obstacle", "Blocked", 3, 11, None, False, [None], 2.0, 10, 3.0),
+              HoleProof("straight", "Straight", 2, 2, 1, True, [1], 0.1, 5, 1.0)]
+    lines = table(proofs).splitlines()
+    assert lines[1].split()[:2] == ["blocked_by_obstacle", "Blocked"]
+    assert len({line.index("par") if "par" in line else None for line in lines[:1]}) == 1
+    assert lines[1].index("Blocked") == lines[2].index("Straight") == lines[0].index("name")

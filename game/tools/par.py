@@ -72,11 +72,13 @@ def warnings_for(proof: HoleProof) -> list[str]:
 
 def table(proofs: list[HoleProof]) -> str:
     """The human-readable table: a row per hole and a total."""
-    lines = [f"{'hole':<18}{'name':<22}{'par':>4}{'estimate':>10}{'best':>6}{'sunk':>6}{'seconds':>9}{'shots/s':>9}"]
+    width = max([18, *(len(p.hole) + 2 for p in proofs)])  # (a long hole id ran into the name)
+    lines = [f"{'hole':<{width}}{'name':<22}{'par':>4}{'estimate':>10}{'best':>6}{'sunk':>6}{'seconds':>9}"
+             f"{'shots/s':>9}"]
     for p in proofs:
         best = "-" if p.best_strokes is None else str(p.best_strokes)
         rate = p.shots / p.seconds if p.seconds > 0 else 0.0
-        lines.append(f"{p.hole:<18}{p.name[:21]:<22}{p.par:>4}{p.estimated_par:>10}{best:>6}"
+        lines.append(f"{p.hole:<{width}}{p.name[:21]:<22}{p.par:>4}{p.estimated_par:>10}{best:>6}"
                      f"{'yes' if p.sunk else 'NO':>6}{p.seconds:>9.1f}{rate:>9.0f}")
-    lines.append(f"{'total':<40}{sum(p.par for p in proofs):>4}{sum(p.estimated_par for p in proofs):>10}")
+    lines.append(f"{'total':<{width + 22}}{sum(p.par for p in proofs):>4}{sum(p.estimated_par for p in proofs):>10}")
     return "\n".join(lines)

@@ -131,5 +131,4 @@ def test_the_par_table_keeps_a_long_hole_id_apart_from_its_name():
               HoleProof("straight", "Straight", 2, 2, 1, True, [1], 0.1, 5, 1.0)]
     lines = table(proofs).splitlines()
     assert lines[1].split()[:2] == ["blocked_by_obstacle", "Blocked"]
-    assert len({line.index("par") if "par" in line else None for line in lines[:1]}) == 1
     assert lines[1].index("Blocked") == lines[2].index("Straight") == lines[0].index("name")

@@ -56,6 +56,9 @@ CASES = [
     ("hole-cyclic-anchor", "hole", "name: &n [a, *n]\npar: 3\ntiles: []\n", 1, "name[1]", "alias refers to the value"),
     ("hole-deep-nesting", "hole", "name: " + "[" * 200 + "]" * 200 + "\npar: 3\n", 1, "(yaml)", "nested more than"),
     ("hole-billion-laughs", "hole", _bomb(), None, None, "values"),
+    ("hole-merge-of-a-list", "hole", "name: M\npar: 3\ntiles:\n  - {<<: [1, 2], at: [0, 0]}\n", 4, "tiles[0]",
+     "<< merges mappings only"),
+    ("hole-5000-digit-par", "hole", "name: M\npar: " + "9" * 5000 + "\ntiles: []\n", 2, "par", "5000 digits: too long"),
     ("hole-huge-tile-index", "hole", _sub(HOLE, "[1, 0]", "[100000000000000000, 0]"), 5, "tiles[1].at[0]",
      "less than or equal to 100"),
     ("hole-python-name-tag", "hole", _sub(HOLE, "name: Case", "name: !!python/name:os.system x"), 1, "name",
@@ -686,3 +689,16 @@ def test_a_hole_whose_cup_no_ball_can_reach_is_refused_by_validate(tmp_path, cap
     err = capsys.readouterr().err.strip().splitlines()
     assert err == [f"{tmp_path / 'shut.yaml'}:6: tiles[2]: the cup cannot be reached from the tee: walls, gates or "
                    "water close every way for a ball 0.9 m across"]
+
+
+def test_yaml_merge_keys_take_a_mappings_keys_where_none_is_written(tmp_path, capsys):
+    """`<<: *tile` (YAML's merge key) was refused with PyYAML's "could not determine a constructor"."""
+    (tmp_path / "merged.yaml").write_text("name: Merged\npar: 3\ntiles:\n  - &first {at: [0, 0], borders: open-e}\n"
+                                          "  - {<<: *first, at: [1, 0], borders: open-ew}\n"
+                                          "  - {<<: *first, at: [2, 0], borders: nowhere}\n")
+    assert main(["validate", str(tmp_path / "merged.yaml")]) == 1
+    assert capsys.readouterr().err == f"{tmp_path / 'merged.yaml'}:6: tiles[2].borders: unknown border set 'nowhere'\n"
+    from polygolf.engine.loading.yamlsource import load_yaml
+
+    data, _ = load_yaml(tmp_path / "merged.yaml")
+    assert data["tiles"][1] == {"at": [1, 0], "borders": "open-ew"}

@@ -69,6 +69,9 @@ _Loader.add_implicit_resolver("tag:yaml.org,2002:float",
                               list("-+0123456789."))
 
 
+MERGE_TAG = "tag:yaml.org,2002:merge"
+
+
 class _Builder:
     """Plain data from composed nodes, with the line of every key and list item."""
 
@@ -101,7 +104,11 @@ class _Builder:
 
     def mapping(self, node: yaml.MappingNode, loc: Loc) -> dict[Any, Any]:
         out: dict[Any, Any] = {}
+        merges = []
         for key_node, value_node in node.value:
+            if key_node.tag == MERGE_TAG:  # `<<: *anchor` (or a list of them): taken after the keys written here
+                merges.append((key_node, value_node))
+                continue
             key = self.scalar(key_node, loc) if isinstance(key_node, yaml.ScalarNode) else None
             if not isinstance(key, str | int) or isinstance(key, bool):
                 raise self.fail(key_node, loc, "keys must be names")
@@ -109,6 +116,15 @@ class _Builder:
                 raise self.fail(key_node, (*loc, key), "duplicate key")
             self.lines[(*loc, key)] = key_node.start_mark.line + 1
             out[key] = self.build(value_node, (*loc, key))
+        for key_node, value_node in merges:  # YAML's merge keys: a key written here wins, then the first merged
+            merged = self.build(value_node, (*loc, "<<"))  # (its lines apart: the keys written here keep theirs)
+            for part in merged if isinstance(merged, list) else [merged]:
+                if not isinstance(part, dict):
+                    raise self.fail(value_node, loc, "<< merges mappings only (an alias of one, or a list of them)")
+                for key, value in part.items():
+                    if key not in out:
+                        out[key] = value
+                        self.lines[(*loc, key)] = key_node.start_mark.line + 1
         return out
 
     def sequence(self, node: yaml.SequenceNode, loc: Loc) -> list[Any]:
@@ -122,6 +138,8 @@ class _Builder:
         try:
             return yaml.constructor.SafeConstructor().construct_object(node, deep=True)
         except (yaml.YAMLError, ValueError, OverflowError) as exc:
+            if isinstance(exc, ValueError) and "integer string conversion" in str(exc):  # (Python's own words)
+                raise self.fail(node, loc, f"a number of {len(str(node.value))} digits: too long") from None
             raise self.fail(node, loc, f"not a valid value: {getattr(exc, 'problem', None) or exc}") from None
 
 

@@ -20,6 +20,7 @@ from polygolf.engine.physics.polygon import Vec
 # m: an edge's cover is looked for this far outside it, and may leave this much of it bare; a face
 # passing this near a vertex counts as passing through it.
 PROBE = 1e-4
+END_SLACK = 50 * PROBE  # uncovered at an edge's end, still internal: neighbours meeting it at 1.1° or more
 _TURN = 2.0 * math.pi
 _FLAT = 1e-6  # rad: the solid round a vertex fills half the turn within this: a flat stretch
 
@@ -40,16 +41,18 @@ def _inside_span(piece: Sequence[Vec], normals: Sequence[Vec], x: float, y: floa
     return (lo, hi) if lo < hi else None
 
 
-def _covered_along(spans: list[tuple[float, float]], margin: float) -> bool:
-    """Whether the spans, joined, cover [margin, 1 - margin], a gap of up to `margin` between two
+def _covered_along(spans: list[tuple[float, float]], margin: float, ends: float) -> bool:
+    """Whether the spans, joined, cover [ends, 1 - ends], a gap of up to `margin` between two
     counting as none (two pieces side by side cover the line where they touch, give or take a
-    rounding of their coordinates)."""
-    reach = margin
+    rounding of their coordinates). `ends`: what may stay uncovered at either end: the probe line,
+    PROBE outside the edge, leaves a neighbour that meets the edge's end at an acute angle well
+    before that end (0.1 mm / tan 5.7° = 1 mm), and the edge was taken for a face."""
+    reach = ends
     for lo, hi in sorted(spans):
         if lo > reach + margin:
             return False
         reach = max(reach, hi)
-    return reach >= 1.0 - margin
+    return reach >= 1.0 - ends
 
 
 def _meet(a: float, wa: float, b: float, wb: float) -> tuple[float, float]:
@@ -117,7 +120,8 @@ def covered_features(pieces: Sequence[Sequence[Vec]], normals: Sequence[Sequence
             spans = [span for j in others
                      if (span := _inside_span(pieces[j], normals[j], ax + PROBE * nx, ay + PROBE * ny, bx - ax,
                                               by - ay)) is not None]
-            if spans and _covered_along(spans, PROBE / max(math.hypot(bx - ax, by - ay), PROBE)):
+            length = max(math.hypot(bx - ax, by - ay), PROBE)
+            if spans and _covered_along(spans, PROBE / length, min(END_SLACK / length, 0.25)):
                 edges.add(e)
         corners = set()
         for v, (vx, vy) in enumerate(piece):

@@ -103,7 +103,7 @@ def hold_islands(state: np.ndarray, settles: np.ndarray, touching: np.ndarray, l
             for k in range(len(island)):
                 island[k] = k
             joined = True
-        a, b = _root(island, a), _root(island, b)
+        a, b = root(island, a), root(island, b)
         if a != b:
             island[max(a, b)] = min(a, b)
     if not joined:
@@ -112,18 +112,20 @@ def hold_islands(state: np.ndarray, settles: np.ndarray, touching: np.ndarray, l
         held[k] = False
     for k in range(len(island)):  # an island holds on while any awake dynamic body in it is not ready
         if state[k, ASLEEP] == 0.0 and state[k, INV_MASS] > 0.0 and not _ready(state, settles, k, time_to_rest):
-            held[_root(island, k)] = True
+            held[root(island, k)] = True
     for k in range(len(island)):
-        held[k] = held[_root(island, k)]
+        held[k] = held[root(island, k)]
     return True
 
 
-@inlined_leaf
-def _root(island: np.ndarray, k: int) -> int:
-    while island[k] != k:
-        island[k] = island[island[k]]
-        k = island[k]
-    return k
+@leaf_kernel
+def root(parent: np.ndarray, key: int) -> int:
+    """Union-find: the root of `key`'s set in `parent` (each entry its parent; a root its own),
+    halving the path on the way (the islands here and the solver's)."""
+    while parent[key] != key:
+        parent[key] = parent[parent[key]]
+        key = parent[key]
+    return key
 
 
 @leaf_kernel

@@ -63,6 +63,7 @@ from polygolf.engine.physics.contact import (
     table_of,
 )
 from polygolf.engine.physics.jit import kernel, leaf_kernel, warm_up
+from polygolf.engine.physics.motion import root as _root
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import BLOCK_MAX_CONDITION, LINEAR_SLOP, MAX_CORRECTION, POSITION_BETA
 
@@ -153,14 +154,6 @@ def solve_block(k11: float, k12: float, k22: float, b1: float, b2: float, a1: fl
 
 
 # --- islands and the shock chain ------------------------------------------------------------------
-
-@leaf_kernel
-def _root(parent: np.ndarray, key: int) -> int:
-    while parent[key] != key:
-        parent[key] = parent[parent[key]]
-        key = parent[key]
-    return key
-
 
 @kernel
 def _islands(bodies: np.ndarray, pair: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -47,7 +47,7 @@ MAX_SECONDS = 3_600.0  # `simulate --seconds`
 LIMITS: list[tuple[str, str]] = [
     ("content file size", f"≤ {MAX_FILE_BYTES // 1024} KiB"),
     ("YAML nesting depth", f"≤ {MAX_DEPTH}"),
-    ("YAML values (anchors and aliases expanded)", f"≤ {MAX_NODES:,}"),
+    ("YAML values (anchors, aliases and `<<` merge keys expanded)", f"≤ {MAX_NODES:,}"),
     ("every number", "finite (no .inf, .nan)"),
     ("coordinates: positions, vertices, box centres", f"|x|, |y| ≤ {MAX_COORDINATE:,.0f} m"),
     ("shape radius (regular, star, random)", f"{MIN_RADIUS} – {MAX_RADIUS:g} m"),

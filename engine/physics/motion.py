@@ -89,8 +89,15 @@ def hold_islands(state: np.ndarray, settles: np.ndarray, touching: np.ndarray, l
     -> row) rest together, as Box2D's islands sleep: held[k] says body row k is still long enough
     but a dynamic body it touches, directly or through others, is not yet. (Each alone, the first
     to sleep was woken by a still neighbour, and three balls at rest in a row never slept.)
-    `island`: room for a row a body. Returns whether any two dynamic bodies touch (else `held`
-    is left as it was: nobody is held)."""
+    `island`: room for a row a body. Returns whether any two dynamic bodies touch and any body is
+    ready to rest (else `held` is left as it was: nobody is held; a crowd in motion costs one pass)."""
+    ready = False
+    for k in range(len(island)):
+        if state[k, ASLEEP] == 0.0 and _ready(state, settles, k, time_to_rest):
+            ready = True
+            break
+    if not ready:
+        return False  # (nobody would rest this substep: nobody to hold)
     joined = False
     for g in range(touching.shape[0]):
         ea, eb = touching[g, 0], touching[g, 1]

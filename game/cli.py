@@ -437,8 +437,7 @@ def _scores(args: argparse.Namespace) -> int:
         from polygolf.engine.golf.holes import find_course, load_all_courses
 
         courses, unread = load_all_courses()
-        find_course(courses, next((c.id for c in courses if wanted == c.name.lower().replace(" ", "-")), wanted),
-                    unread)  # (a course nobody knows is a mistyped name, not a course without rounds)
+        find_course(courses, wanted, unread)  # (a course nobody knows is a mistyped name, not one without rounds)
     if args.json:
         print(json.dumps([{"course": b.course, "hole": b.hole, "number": None if b.position is None else b.position + 1,
                            "name": b.name, "shape": b.shape, "strokes": b.strokes, "par": b.par, "player": b.player,

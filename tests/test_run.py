@@ -260,3 +260,19 @@ def test_candidates_go_between_runs_as_between_processors():
         broadphase.process()
         assert all(np.array_equal(a, b) for a, b in zip(found, sim.res.candidates.arrays, strict=True))
         assert len(sim.res.candidates.pair_ents) > 0
+
+
+def test_a_run_calls_its_kernel_without_dispatch_and_answers_the_same():
+    """`jit.compiled_entry`: the run's machine code called directly (where numba compiles) gives
+    what numba's dispatch of the same call gives, and a kernel's entry answers as the kernel."""
+    from polygolf.engine.physics.jit import COMPILED, compiled_entry
+    from polygolf.engine.physics.motion import kinetic_energy
+    from polygolf.engine.systems.run import run_stages
+
+    with scene_sim("pile", "balanced") as sim:
+        sim.step(2)
+        run = sim._parts[1]
+        assert (run._run is not run_stages) == COMPILED
+        state = sim.res.bodies.state.copy()
+        assert compiled_entry(kinetic_energy, state)(state) == kinetic_energy(state)
+        assert kinetic_energy(state)[0] > 0.0

@@ -71,6 +71,7 @@ class Simulation:
         for priority, proc in enumerate(reversed(scheduled)):
             esper.add_processor(proc, priority=priority)
         self._parts = _frame_parts(scheduled)
+        self._rules = [*self._parts[0], *self._parts[2]] if self._parts is not None else []
         energy = self.kinetic_energy()
         self.metrics.initial_energy = self.metrics.max_energy = self.metrics.final_energy = energy
 
@@ -120,7 +121,7 @@ class Simulation:
         while left:
             for proc in before:
                 proc.process()
-            quiet = all(proc.quiet() for proc in before) and all(proc.quiet() for proc in after)
+            quiet = not self._rules or all(proc.quiet() for proc in self._rules)
             left -= run.process(left if quiet else 1, metrics)
             for proc in after:
                 proc.process()

@@ -136,6 +136,19 @@ def inlined_kernel(fn: F) -> F:
     return numba.njit(cache=True, nogil=True, inline="always")(fn)
 
 
+def compiled_entry(fn: Callable, *args: object) -> Callable:
+    """`fn`'s machine code for arguments of these types, called without numba's dispatch (which types
+    every argument of every call, a structure's through Python: about a microsecond, a tenth of a
+    lone ball's frame). For a caller that makes many calls whose arguments keep these types; it
+    compiles (or loads) that code now if need be. Without numba, `fn` itself."""
+    if not COMPILED:
+        return fn
+    signature = tuple(numba.typeof(arg) for arg in args)
+    if signature not in fn.overloads:
+        fn.compile(signature)
+    return fn.overloads[signature].entry_point
+
+
 def warm_up(label: str) -> Callable[[Callable[[], None]], Callable[[], None]]:
     """Register a function that calls a module's kernels once with the types the engine uses."""
     def register(fn: Callable[[], None]) -> Callable[[], None]:

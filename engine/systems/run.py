@@ -37,7 +37,7 @@ from polygolf.engine.physics.body import COLUMNS, BodyStore
 from polygolf.engine.physics.contact import ContactTable
 from polygolf.engine.physics.geometry import Areas
 from polygolf.engine.physics.grid import FatBoxes, no_fat_pairs
-from polygolf.engine.physics.jit import COMPILED, kernel, numba, warm_up
+from polygolf.engine.physics.jit import COMPILED, compiled_entry, kernel, numba, warm_up
 from polygolf.engine.physics.motion import accelerate, drag, kinetic_energy, turn
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 from polygolf.engine.systems.broadphase import BroadphaseProcessor, pick
@@ -274,6 +274,9 @@ class StageRun(esper.Processor):
             self._by_code.get(BUMPER)
         self._key: tuple = ()
         self._held: Held | None = None
+        self._run = run_stages  # (`run_stages` for what it holds, without numba's dispatch: `_hold`)
+        self._dt = 0.0
+        self._fat_pairs = self._by_code[BROADPHASE].fat_pairs if self._finds else None
         self._holds = 0  # manifolds in the table it holds
 
     def _hold(self) -> None:
@@ -293,6 +296,8 @@ class StageRun(esper.Processor):
                           res.fat_boxes.of(state, len(res.statics.grid)), inputs,
                           res.candidates.arrays, table.arrays, np.zeros(16, dtype=np.int64))
         self._key = key
+        self._dt = config.dt
+        self._run = compiled_entry(run_stages, self._held, 1, self._dt, res.stats.values, _NO_METRICS, False)
         self._holds = len(table)
         if self._contacts:
             res.contacts.keep(self, self._holds)
@@ -310,8 +315,8 @@ class StageRun(esper.Processor):
             put_table(self._held, contacts.table.arrays)  # put there since
         if self._uses and not self._finds:
             put_candidates(self._held, res.candidates.arrays)
-        self._holds, ran = run_stages(self._held, substeps, res.config.dt, res.stats.values,
-                                      _NO_METRICS if metrics is None else metrics, metrics is not None)
+        self._holds, ran = self._run(self._held, substeps, self._dt, res.stats.values,
+                                     _NO_METRICS if metrics is None else metrics, metrics is not None)
         if self._contacts:
             contacts.keep(self, self._holds, fresh=self._uses)
         if self._impacts is not None:
@@ -323,7 +328,7 @@ class StageRun(esper.Processor):
         if self._finds and not self._uses:
             found = res.candidates
             found.near, found.near_first, found.near_found, found.pair_ents = held_candidates(self._held)
-        if self._finds and self._by_code[BROADPHASE].fat_pairs.outgrown():
+        if self._fat_pairs is not None and self._fat_pairs.outgrown():
             self._key = ()  # its kept pairs need more room: hold its inputs again (`FatPairs.of` gives it)
         return ran
 

@@ -47,9 +47,14 @@ NO_SEAMS = np.zeros(0, dtype=np.bool_)
 
 @inlined_leaf
 def max_separation(v1: np.ndarray, n1: np.ndarray, s1: int, e1: int, v2: np.ndarray, s2: int, e2: int,
-                   skip: np.ndarray, skip_start: int) -> tuple[float, int]:
+                   skip: np.ndarray, skip_start: int, limit: float) -> tuple[float, int]:
     """Largest separation of polygon 2 (rows s2..e2) from the faces of polygon 1 (rows s1..e1), but
-    the faces marked in `skip` (from row `skip_start`; -1: none), and that face's index in 1."""
+    the faces marked in `skip` (from row `skip_start`; -1: none), and that face's index in 1; or,
+    as soon as some face separates them by more than `limit`, that face's (a caller that only asks
+    whether they are more than `limit` apart needs no more; `math.inf`: the largest, always).
+
+    A face stops being scanned at the first vertex no farther out than the best face so far: it
+    can no longer be the largest (the first of equals is kept), so the answer is the same."""
     best, best_edge = -1e300, 0
     for i in range(e1 - s1):
         if skip_start >= 0 and skip[skip_start + i]:
@@ -61,8 +66,12 @@ def max_separation(v1: np.ndarray, n1: np.ndarray, s1: int, e1: int, v2: np.ndar
             d = (v2[j, 0] - vx) * nx + (v2[j, 1] - vy) * ny
             if d < lowest:
                 lowest = d
+                if d <= best:
+                    break
         if lowest > best:
             best, best_edge = lowest, i
+            if best > limit:
+                break
     return best, best_edge
 
 
@@ -112,10 +121,10 @@ def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndar
     returns how many. With `seams`, `internal` and `hidden` mark B's edges and vertices row for row
     with `vb` (B is a wall piece). `clip`: (3, 3) scratch for the clipped points."""
     no_skip = NO_SEAMS
-    sep_a, edge_a = max_separation(va, na, sa, ea, vb, sb, eb, no_skip, -1)
+    sep_a, edge_a = max_separation(va, na, sa, ea, vb, sb, eb, no_skip, -1, margin)
     if sep_a > margin:
         return 0
-    sep_b, edge_b = max_separation(vb, nb, sb, eb, va, sa, ea, no_skip, -1)
+    sep_b, edge_b = max_separation(vb, nb, sb, eb, va, sa, ea, no_skip, -1, margin)
     if sep_b > margin:
         return 0
     seam_start = sb if seams else -1
@@ -128,7 +137,7 @@ def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndar
             if covered == eb - sb:
                 return 0  # a piece covered all round: the pieces around it answer for it
             if internal[sb + edge_b]:
-                sep_b, edge_b = max_separation(vb, nb, sb, eb, va, sa, ea, internal, sb)
+                sep_b, edge_b = max_separation(vb, nb, sb, eb, va, sa, ea, internal, sb, math.inf)
 
     ref_is_a = not (sep_b > sep_a + _REFERENCE_TOLERANCE)
     if ref_is_a:
@@ -513,8 +522,8 @@ def separation(verts_a: Sequence[Vec], normals_a: Sequence[Vec], verts_b: Sequen
                normals_b: Sequence[Vec]) -> float:
     """Separating-axis distance: a lower bound on the true distance, exact when it is negative."""
     va, na, vb, nb = _rows(verts_a), _rows(normals_a), _rows(verts_b), _rows(normals_b)
-    sa, _ = max_separation(va, na, 0, len(va), vb, 0, len(vb), NO_SEAMS, -1)
-    sb, _ = max_separation(vb, nb, 0, len(vb), va, 0, len(va), NO_SEAMS, -1)
+    sa, _ = max_separation(va, na, 0, len(va), vb, 0, len(vb), NO_SEAMS, -1, math.inf)
+    sb, _ = max_separation(vb, nb, 0, len(vb), va, 0, len(va), NO_SEAMS, -1, math.inf)
     return sa if sa > sb else sb
 
 

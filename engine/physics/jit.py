@@ -140,8 +140,9 @@ def compiled_entry(fn: Callable, *args: object) -> Callable:
     """`fn`'s machine code for arguments of these types, called without numba's dispatch (which types
     every argument of every call, a structure's through Python: about a microsecond, a tenth of a
     lone ball's frame). For a caller that makes many calls whose arguments keep these types; it
-    compiles (or loads) that code now if need be. Without numba, `fn` itself."""
-    if not COMPILED:
+    compiles (or loads) that code now if need be. Without numba, or if `fn` is not a kernel (a
+    wrapper put in its place, as a profile does), `fn` itself."""
+    if not COMPILED or not isinstance(fn, numba.core.registry.CPUDispatcher):
         return fn
     signature = tuple(numba.typeof(arg) for arg in args)
     if signature not in fn.overloads:

@@ -198,12 +198,12 @@ def _pinched(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first: np.n
     for i in range(len(arm_first) - 1):
         for j in range(len(own_first) - 1):
             gap, face = max_separation(arm_v, arm_n, arm_first[i], arm_first[i + 1], verts, own_first[j],
-                                       own_first[j + 1], no_seams, -1)
+                                       own_first[j + 1], no_seams, -1, math.inf)
             if gap > best:
                 row = arm_first[i] + face
                 best, push_x, push_y = gap, arm_n[row, 0], arm_n[row, 1]
             gap, face = max_separation(verts, normals, own_first[j], own_first[j + 1], arm_v, arm_first[i],
-                                       arm_first[i + 1], no_seams, -1)
+                                       arm_first[i + 1], no_seams, -1, math.inf)
             if gap > best:
                 row = own_first[j] + face
                 best, push_x, push_y = gap, -normals[row, 0], -normals[row, 1]
@@ -215,7 +215,7 @@ def _pinched(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first: np.n
         g = found[n]
         for j in range(len(own_first) - 1):
             gap, face = max_separation(wv, wn, wfirst[g], wfirst[g + 1], verts, own_first[j], own_first[j + 1],
-                                       no_seams, -1)
+                                       no_seams, -1, math.inf)
             row = wfirst[g] + face
             # wn[row] points out of the wall, towards the ball.
             if gap < CONTACT_MARGIN and push_x * wn[row, 0] + push_y * wn[row, 1] < -0.25:

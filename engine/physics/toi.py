@@ -410,8 +410,18 @@ def body_pair_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.
     `sweep_all`; else, between two dynamic ones, half the thinner's width), the earliest impact; it
     goes into `hits[q]` of each awake dynamic body of the pair and, for a pair with a kinematic body,
     into `arm_hits[g]` (else 1.0) for the caller to judge the arm. Returns how many pairs hit."""
+    return _pair_hits(lv, ln, first, reach, body_first, pairs, state, rows, radius, thickness, meet, sweep_all, slop,
+                      target, tolerance, allowance, hits, arm_hits, toi_work(widest(first)))
+
+
+@leaf_kernel
+def _pair_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
+               pairs: np.ndarray, state: np.ndarray, rows: np.ndarray, radius: np.ndarray, thickness: np.ndarray,
+               meet: bool, sweep_all: bool, slop: float, target: float, tolerance: float, allowance: float,
+               hits: np.ndarray, arm_hits: np.ndarray, work: tuple) -> int:
+    """`body_pair_hits`' work, `work` its scratch (`toi_work`). (A leaf: the views it takes of each
+    pair's pieces cost nothing; in a kernel, each one is two atomic reference counts.)"""
     count = 0
-    work = toi_work(widest(first))
     start_a, end_a, start_b, end_b = work[4][0], work[4][1], work[4][2], work[4][3]
     for g in range(len(pairs)):
         arm_hits[g] = 1.0
@@ -545,14 +555,26 @@ def pairs_apart(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.nda
     ball that meets it is judged as if alone with it (in a fan of shots, the other balls that met
     the arm changed a shot's contacts, and it ended elsewhere than played alone)."""
     busy = np.zeros(len(rows), dtype=np.int64)
-    work = toi_work(widest(first))
-    pose_a, vel_a, pose_b, vel_b = np.empty(3), np.empty(3), np.empty(3), np.empty(3)
     for g in range(len(pairs)):
         busy[pairs[g, 0]] += 1
         busy[pairs[g, 1]] += 1
     if len(pairs):
         for q in near_walls:
             busy[q] += 1
+    _apart(lv, ln, first, reach, body_first, pairs, gaps, state, rows, radius, dt, apart, busy, np.empty((4, 3)),
+           toi_work(widest(first)))
+    pressed[:] = False
+    _push_through(state, rows, pairs, apart, pressed)
+
+
+@leaf_kernel
+def _apart(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
+           pairs: np.ndarray, gaps: np.ndarray, state: np.ndarray, rows: np.ndarray, radius: np.ndarray, dt: float,
+           apart: np.ndarray, busy: np.ndarray, poses: np.ndarray, work: tuple) -> None:
+    """`pairs_apart`'s gap test pair by pair (`busy[q]`: how many pairs and walls body q has; `poses`
+    and `work`, scratch). (A leaf: the views it takes of each pair's pieces cost nothing; in a kernel,
+    each one is two atomic reference counts.)"""
+    pose_a, vel_a, pose_b, vel_b = poses[0], poses[1], poses[2], poses[3]
     for g in range(len(pairs)):
         apart[g] = False
         if not gaps[g] > GAP_TOLERANCE:
@@ -568,7 +590,12 @@ def pairs_apart(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.nda
             lv, ln, first[pa0:pa1 + 1], reach[pa0:pa1], radius[a], pose_a, vel_a,
             lv, ln, first[pb0:pb1 + 1], reach[pb0:pb1], radius[b], pose_b, vel_b,
             dt, gaps[g], busy[a] > 1 and state[ka, INV_MASS] > 0.0, busy[b] > 1 and state[kb, INV_MASS] > 0.0, work)
-    pressed[:] = False
+
+
+@leaf_kernel
+def _push_through(state: np.ndarray, rows: np.ndarray, pairs: np.ndarray, apart: np.ndarray,
+                  pressed: np.ndarray) -> None:
+    """`pairs_apart`'s chains: which bodies are pressed, and the pairs a push reaches through."""
     grew = False
     for g in range(len(pairs)):
         if not apart[g]:

@@ -288,16 +288,27 @@ def _clear_of(verts: np.ndarray, normals: np.ndarray, first: np.ndarray, p0: int
 
 
 @leaf_kernel
+def close_to_walls(wv: np.ndarray, wn: np.ndarray, wall_first: np.ndarray, near: np.ndarray, n0: int, n1: int,
+                   x: float, y: float, radius: float, margin: float) -> bool:
+    """Whether a body about (x, y) of bounding radius `radius` has a wall piece among near[n0:n1]
+    that its bounding circle does not stay more than `margin` clear of (then `collide_convex` may
+    make a row; else none)."""
+    beyond = radius + margin + _CIRCLE_SLACK
+    for n in range(n0, n1):
+        g = near[n]
+        if not _circle_beyond(wv, wn, wall_first[g], wall_first[g + 1], x, y, beyond):
+            return True
+    return False
+
+
+@leaf_kernel
 def _any_close(wv: np.ndarray, wn: np.ndarray, wall_first: np.ndarray, which: np.ndarray, radius: np.ndarray,
                states: np.ndarray, near_first: np.ndarray, near: np.ndarray, margin: float) -> bool:
-    """Whether any body of `bodies_wall_contacts` has a wall piece near it that its bounding circle
-    does not stay more than `margin` clear of."""
+    """Whether any body of `bodies_wall_contacts` is `close_to_walls`."""
     for q in range(len(which)):
-        beyond = radius[which[q]] + margin + _CIRCLE_SLACK
-        for n in range(near_first[q], near_first[q + 1]):
-            g = near[n]
-            if not _circle_beyond(wv, wn, wall_first[g], wall_first[g + 1], states[q, 0], states[q, 1], beyond):
-                return True
+        if close_to_walls(wv, wn, wall_first, near, near_first[q], near_first[q + 1], states[q, 0], states[q, 1],
+                          radius[which[q]], margin):
+            return True
     return False
 
 

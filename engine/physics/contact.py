@@ -42,6 +42,7 @@ from polygolf.engine.physics.collide import (
     Y,
     bodies_pair_contacts,
     bodies_wall_contacts,
+    close_to_walls,
     kept_pairs,
 )
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable
@@ -356,6 +357,21 @@ def build_contacts(wall_rows: np.ndarray, near_ents: np.ndarray, near_rows: np.n
     points = np.zeros((n, POINT_COLUMNS))
     keys = np.empty((n, KEY_COLUMNS), dtype=np.int64)
     scratch = np.empty((4, max(n, 2)), dtype=np.int64)
+    m, p, deepest = _fill_table(wall_rows, near_ents, near_rows, near_materials, wall_materials, wall_owner, wall_index,
+                                pair_rows, pair_first, pair_ents, pair_body_rows, pair_materials, state, static, ngs,
+                                deepest, ents, pair, normals, first, points, keys, scratch)
+    return ents[:m], pair[:m], normals[:m], first[:m + 1], points[:p], keys[:p], deepest
+
+
+@leaf_kernel
+def _fill_table(wall_rows: np.ndarray, near_ents: np.ndarray, near_rows: np.ndarray, near_materials: np.ndarray,
+                wall_materials: np.ndarray, wall_owner: np.ndarray, wall_index: np.ndarray, pair_rows: np.ndarray,
+                pair_first: np.ndarray, pair_ents: np.ndarray, pair_body_rows: np.ndarray, pair_materials: np.ndarray,
+                state: np.ndarray, static: np.ndarray, ngs: bool, deepest: float, ents: np.ndarray, pair: np.ndarray,
+                normals: np.ndarray, first: np.ndarray, points: np.ndarray, keys: np.ndarray, scratch: np.ndarray
+                ) -> tuple[int, int, float]:
+    """`build_contacts`' work into its arrays: how many manifolds and points, and the deepest
+    overlap. (A leaf: in a kernel, each group's call and the views it takes counted references.)"""
     static_row = state.shape[0]
     m = p = 0
     s = 0
@@ -378,7 +394,7 @@ def build_contacts(wall_rows: np.ndarray, near_ents: np.ndarray, near_rows: np.n
                                    m, p)
         if overlap > deepest:
             deepest = overlap
-    return ents[:m], pair[:m], normals[:m], first[:m + 1], points[:p], keys[:p], deepest
+    return m, p, deepest
 
 
 @leaf_kernel
@@ -438,6 +454,25 @@ def carry_impulses(old_ents: np.ndarray, old_first: np.ndarray, old_keys: np.nda
                 points[p, P_TANGENT_IMPULSE] = old_points[q, P_TANGENT_IMPULSE]
                 carried += 1
     return carried
+
+
+@leaf_kernel
+def nothing_to_touch(state: np.ndarray, shapes: tuple, walls: tuple, candidates: tuple, margin: float) -> bool:
+    """Whether `find_contacts` would find no contact at all for these candidates: no body pair, and
+    no body within `margin` of a wall piece near it (`collide.close_to_walls`). Asked first, for
+    nothing (a leaf), where a lone ball near a wall but clear of it spends most substeps."""
+    near_ents, near_first, near_found, pair_ents = candidates
+    rows, radius, lookup = shapes[5], shapes[6], shapes[10]
+    wv, wn, wall_first = walls[0][0], walls[0][1], walls[0][2]
+    if len(pair_ents):
+        return False
+    for q in range(len(near_ents)):
+        shape = lookup[near_ents[q]]
+        k = rows[shape]
+        if close_to_walls(wv, wn, wall_first, near_found, near_first[q], near_first[q + 1], state[k, B_X],
+                          state[k, B_Y], radius[shape], margin):
+            return False
+    return True
 
 
 @kernel

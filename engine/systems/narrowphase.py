@@ -5,7 +5,14 @@ import numpy as np
 from polygolf.engine.components import Collider
 from polygolf.engine.components.resources import NO_CONTACTS, PENETRATION, Resources
 from polygolf.engine.physics.body import Body, BodyStore
-from polygolf.engine.physics.contact import KEY_COLUMNS, MANIFOLD_COLUMNS, POINT_COLUMNS, ContactTable, find_contacts
+from polygolf.engine.physics.contact import (
+    KEY_COLUMNS,
+    MANIFOLD_COLUMNS,
+    POINT_COLUMNS,
+    ContactTable,
+    find_contacts,
+    nothing_to_touch,
+)
 from polygolf.engine.physics.jit import inlined_kernel
 from polygolf.engine.physics.settings import CONTACT_MARGIN, RESTITUTION_THRESHOLD
 
@@ -62,6 +69,8 @@ def touch(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple, candida
         return (np.zeros((0, 2), dtype=np.int64), np.zeros((0, 2), dtype=np.int64), np.zeros((0, MANIFOLD_COLUMNS)),
                 np.zeros(0, dtype=np.bool_), np.zeros(1, dtype=np.int64), np.zeros((0, POINT_COLUMNS)),
                 np.zeros((0, KEY_COLUMNS), dtype=np.int64))
+    if not len(old[1]) and nothing_to_touch(state, shapes, walls, candidates, CONTACT_MARGIN):
+        return old  # empty, as `find_contacts` would make it (without taking a hundred arrays in and out)
     lv, ln, first, reach, body_first, rows, radius, _, materials, ents, lookup = shapes
     arrays, wall_materials, owner, index, static, _ = walls
     ngs, warm = inputs

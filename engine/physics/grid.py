@@ -251,17 +251,28 @@ def bodies_near(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, margin:
     and len(rows) + 1 rows. Returns `found` (grown if it had to) and how many bodies have boxes
     near."""
     both = np.empty((2, 4))
-    first[0] = 0
-    q, bodies, total = 0, 0, 0
+    q, bodies, total, waiting = start_near(state, rows, radius, margin, grid, fat_boxes, seen, scratch, near, first,
+                                           found, both)
     while True:
-        q, bodies, total, waiting = _fill_near(state, rows, radius, margin, grid, fat_boxes, seen, scratch, near,
-                                               first, found, both, q, bodies, total)
         if waiting == 0:
             return found, bodies
         grown = np.empty(2 * len(found) + waiting, dtype=np.int64)  # room for the body that did not fit
         grown[:total] = found[:total]
         found = grown
         q, bodies, total = _put_near(scratch, waiting, near, first, found, q, bodies, total)
+        q, bodies, total, waiting = _fill_near(state, rows, radius, margin, grid, fat_boxes, seen, scratch, near,
+                                               first, found, both, q, bodies, total)
+
+
+@leaf_kernel
+def start_near(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, margin: float, grid: tuple,
+               fat_boxes: tuple, seen: np.ndarray, scratch: np.ndarray, near: np.ndarray, first: np.ndarray,
+               found: np.ndarray, both: np.ndarray) -> tuple[int, int, int, int]:
+    """`bodies_near`'s search from the first body, as far as `found` has room (`_fill_near`; `both`:
+    room for two boxes). With nothing waiting (the last answer), `near`, `first` and `found` hold
+    the whole answer, and the second number is how many bodies have boxes near."""
+    first[0] = 0
+    return _fill_near(state, rows, radius, margin, grid, fat_boxes, seen, scratch, near, first, found, both, 0, 0, 0)
 
 
 @leaf_kernel

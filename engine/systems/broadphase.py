@@ -3,8 +3,8 @@ import numpy as np
 
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
-from polygolf.engine.physics.grid import FatPairs, bodies_near, body_pairs, by_entity
-from polygolf.engine.physics.jit import inlined_kernel
+from polygolf.engine.physics.grid import FatPairs, bodies_near, body_pairs, by_entity, start_near
+from polygolf.engine.physics.jit import inlined_kernel, leaf_kernel
 from polygolf.engine.physics.settings import CONTACT_MARGIN
 
 _NO_PAIRS = np.zeros((0, 2), dtype=np.int64)
@@ -53,11 +53,26 @@ def pick(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, input
     candidates (`Candidates.arrays`: bodies with walls near, as entities; their walls in compressed
     rows; body pairs as entities, in entity order however they were found), and `found` (grown if
     it had to). The walls' rows are views of `first` and `found`: good until the next call."""
-    _, _, _, _, _, rows, radius, _, _, ents, _ = shapes
-    grid = walls[5]
-    seen, scratch, near, first, no_pairs, several, meet, kept = inputs
-    found, count = bodies_near(state, rows, radius, CONTACT_MARGIN, grid, fat_boxes, seen, scratch, near, first, found)
-    pairs = no_pairs
-    if several:
-        pairs = by_entity(body_pairs(state, rows, radius, CONTACT_MARGIN, False, meet, False, True, kept), ents)
-    return (ents[near[:count]], first[:count + 1], found[:first[count]], pairs), found
+    count, waiting = _near(state, shapes, walls, fat_boxes, inputs, found, np.empty((2, 4)))
+    if waiting:  # `found` must grow: the search again, growing it
+        found, count = bodies_near(state, shapes[5], shapes[6], CONTACT_MARGIN, walls[5], fat_boxes, inputs[0],
+                                   inputs[1], inputs[2], inputs[3], found)
+    pairs = inputs[4]  # (none)
+    if inputs[5]:  # several bodies
+        pairs = by_entity(body_pairs(state, shapes[5], shapes[6], CONTACT_MARGIN, False, inputs[6], False, True,
+                                     inputs[7]), shapes[9])
+    near, first = inputs[2], inputs[3]
+    return (shapes[9][near[:count]], first[:count + 1], found[:first[count]], pairs), found
+
+
+@leaf_kernel
+def _near(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple, found: np.ndarray,
+          both: np.ndarray) -> tuple[int, int]:
+    """`grid.start_near` with the stage's tuples: how many bodies have walls near, and how many boxes
+    wait for room in `found` (0: none). (A leaf takes the tuples apart for nothing; `pick`, inlined
+    in every run of stages, would count a reference to each array it took out, every substep.)"""
+    _, _, _, _, _, rows, radius, _, _, _, _ = shapes
+    seen, scratch, near, first, _, _, _, _ = inputs
+    _, bodies, _, waiting = start_near(state, rows, radius, CONTACT_MARGIN, walls[5], fat_boxes, seen, scratch, near,
+                                       first, found, both)
+    return bodies, waiting

@@ -1,6 +1,7 @@
 """PolyGolf against pymunk (Chipmunk2D) on equal work, in one process (a benchmark script, not a test).
 
     python benchmarks/bench_pymunk.py [--repeats 5] [--preset balanced] [--skip-1000] [--shots 1000]
+                                      [--only {100,1000,ball,shots}]
 
 Equal work: the same bodies, walls, materials and start, stepped in 1/60 s frames of the preset's
 substeps, each substep with the preset's velocity iterations (pymunk's `iterations`). pymunk has no
@@ -142,16 +143,19 @@ def main() -> None:
     parser.add_argument("--preset", choices=list(PRESETS), default="balanced")
     parser.add_argument("--skip-1000", action="store_true", help="leave out the 1000-pentagon box")
     parser.add_argument("--shots", type=int, default=1000, help="shots at once (default 1000)")
+    parser.add_argument("--only", choices=["100", "1000", "ball", "shots"],
+                        help="one scenario alone (to compare two versions run after each other)")
     args = parser.parse_args()
     knobs = PRESETS[args.preset]
     print(f"kernels compiled or loaded in {compile_kernels():.1f} s (not timed below)")
     print(f"pymunk {pymunk.version} (Chipmunk2D {pymunk.chipmunk_version}); PolyGolf preset {args.preset}: "
           f"{knobs.substeps} substeps x {knobs.iterations} iterations; median of {args.repeats} repeats")
 
-    scenarios = [("100 pentagons in a box", pentagons_in_a_box(100), 30),
-                 ("one ball on Obstacle Field", ball_on_hole(), 120)]
-    if not args.skip_1000:
-        scenarios.insert(1, ("1000 pentagons in a box", pentagons_in_a_box(1000), 5))
+    scenarios = [("100", "100 pentagons in a box", lambda: pentagons_in_a_box(100), 30),
+                 ("1000", "1000 pentagons in a box", lambda: pentagons_in_a_box(1000), 5),
+                 ("ball", "one ball on Obstacle Field", ball_on_hole, 120)]
+    scenarios = [(label, make(), frames) for key, label, make, frames in scenarios
+                 if (args.only or key) == key and not (key == "1000" and args.skip_1000)]
     print(f"{'scenario':<30}{'PolyGolf':>14}{'pymunk':>14}{'ratio':>9}{'first frame':>24}")
     for label, scene, frames in scenarios:
         ours, theirs = [], []
@@ -168,6 +172,8 @@ def main() -> None:
 
     # A fan takes some 70 ms and pymunk's run of the same balls some 4 s: PolyGolf's figure is the
     # median of `--repeats` fans (after one not counted, as above), pymunk's of half as many runs.
+    if args.only not in (None, "shots"):
+        return
     ours = statistics.median([polygolf_shots(args.shots, args.preset, 3.0) for _ in range(args.repeats + 1)][1:])
     theirs = statistics.median(pymunk_shots(args.shots, args.preset, 3.0) for _ in range(max(1, args.repeats // 2)))
     ahead = f"{theirs / ours:.1f}x" if theirs >= ours else f"PolyGolf {ours / theirs:.1f}x faster"

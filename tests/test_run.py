@@ -15,7 +15,9 @@ from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.golf.scenes import find_hole
 from polygolf.engine.loading.scene import Scene, ShapeSpec, build_scene
 from polygolf.engine.physics.contact import ContactTable
-from polygolf.engine.systems.run import BROADPHASE, StageRun, schedule
+from polygolf.engine.physics.jit import COMPILED, compiled_entry
+from polygolf.engine.physics.motion import kinetic_energy
+from polygolf.engine.systems.run import BROADPHASE, StageRun, run_stages, schedule
 
 from .conftest import ROOT
 from .helpers import scene_sim
@@ -265,10 +267,6 @@ def test_candidates_go_between_runs_as_between_processors():
 def test_a_run_calls_its_kernel_without_dispatch_and_answers_the_same():
     """`jit.compiled_entry`: the run's machine code called directly (where numba compiles) gives
     what numba's dispatch of the same call gives, and a kernel's entry answers as the kernel."""
-    from polygolf.engine.physics.jit import COMPILED, compiled_entry
-    from polygolf.engine.physics.motion import kinetic_energy
-    from polygolf.engine.systems.run import run_stages
-
     with scene_sim("pile", "balanced") as sim:
         sim.step(2)
         run = sim._parts[1]

@@ -12,11 +12,12 @@ from hypothesis import strategies as st
 
 from polygolf.engine.assembly.assemble import make_body, make_collider
 from polygolf.engine.components import Body, Drag, Material
+from polygolf.engine.loading.scene import Scene, build_scene
 from polygolf.engine.physics import polygon
 from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, COLUMNS, INV_MASS, X0, Y0, X, Y
 from polygolf.engine.physics.contact import P_NORMAL_IMPULSE, P_TANGENT_IMPULSE, ContactPoint, Manifold, table_of
 from polygolf.engine.physics.settings import LINEAR_SLOP, TIME_TO_REST, TOI_TARGET
-from polygolf.engine.systems.broadphase import BroadphaseProcessor
+from polygolf.engine.systems.broadphase import BroadphaseProcessor, pick
 from polygolf.engine.systems.ccd import CCDProcessor, _dynamic_pairs_may_step_far, _together
 from polygolf.engine.systems.drag import DragProcessor
 from polygolf.engine.systems.gravity import GravityProcessor
@@ -299,3 +300,24 @@ def test_touching_balls_go_back_together_and_others_alone():
     hits = np.array([1.0, 0.3, 0.6, 1.0])
     _together(state, rows, radius, pairs, hits)
     assert hits.tolist() == [0.3, 0.3, 0.6, 1.0]
+
+
+def test_pick_with_no_room_for_the_walls_it_finds_grows_from_where_it_stopped():
+    """The broadphase's kernel (`pick`) given room for one wall piece grows its array on from the
+    body that did not fit (`grid.grow_near`) and finds what it finds with room to spare: three
+    balls among small blocks within their margins, one by the first (it fits), four by the others
+    (the second does not)."""
+    walls = [{"box": {"center": [3.0 * b + 0.38 * i, 0.38 * j], "half": [0.1, 0.1]}}
+             for b in range(3) for i in (-1, 1) for j in (-1, 1) if b or (i, j) == (1, 1)]
+    balls = [{"name": f"ball-{b}", "shape": {"regular": 6, "radius": 0.3}, "position": [3.0 * b, 0.0],
+              "velocity": [1.0, 0.5]} for b in range(3)]
+    with build_scene(Scene.model_validate({"name": "blocks", "bodies": balls, "walls": walls}), "balanced") as sim:
+        proc = next(p for p in sim.processors if isinstance(p, BroadphaseProcessor))
+        inputs = proc.inputs()
+        state, res = sim.res.bodies.state, sim.res
+        fat = res.fat_boxes.of(state, len(res.statics.grid))
+        roomy, _ = pick(state, res.shapes.packed, res.statics.packed, fat, inputs, np.empty(4096, dtype=np.int64))
+        roomy = [a.copy() for a in roomy]
+        tight, grown = pick(state, res.shapes.packed, res.statics.packed, fat, inputs, np.empty(1, dtype=np.int64))
+    assert len(grown) > 1 and len(roomy[0]) == 3 and roomy[1].tolist() == [0, 1, 5, 9]
+    assert all(np.array_equal(a, b) for a, b in zip(roomy, tight, strict=True))

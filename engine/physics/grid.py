@@ -253,15 +253,26 @@ def bodies_near(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, margin:
     both = np.empty((2, 4))
     q, bodies, total, waiting = start_near(state, rows, radius, margin, grid, fat_boxes, seen, scratch, near, first,
                                            found, both)
-    while True:
-        if waiting == 0:
-            return found, bodies
-        grown = np.empty(2 * len(found) + waiting, dtype=np.int64)  # room for the body that did not fit
+    return grow_near(state, rows, radius, margin, grid, fat_boxes, seen, scratch, near, first, found, both, q, bodies,
+                     total, waiting)
+
+
+@kernel
+def grow_near(state: np.ndarray, rows: np.ndarray, radius: np.ndarray, margin: float, grid: tuple,
+              fat_boxes: tuple, seen: np.ndarray, scratch: np.ndarray, near: np.ndarray, first: np.ndarray,
+              found: np.ndarray, both: np.ndarray, q: int, bodies: int, total: int, waiting: int
+              ) -> tuple[np.ndarray, int]:
+    """`bodies_near` from where `start_near` (or `_fill_near`) stopped, at body q with `waiting`
+    boxes in `scratch` and no room for them: `found` grows (twice as large and room for those) and
+    the search goes on, as often as it must. Returns `found` and how many bodies have boxes near."""
+    while waiting:
+        grown = np.empty(2 * len(found) + waiting, dtype=np.int64)
         grown[:total] = found[:total]
         found = grown
         q, bodies, total = _put_near(scratch, waiting, near, first, found, q, bodies, total)
         q, bodies, total, waiting = _fill_near(state, rows, radius, margin, grid, fat_boxes, seen, scratch, near,
                                                first, found, both, q, bodies, total)
+    return found, bodies
 
 
 @leaf_kernel

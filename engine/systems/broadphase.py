@@ -3,7 +3,7 @@ import numpy as np
 
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
-from polygolf.engine.physics.grid import FatPairs, bodies_near, body_pairs, by_entity, start_near
+from polygolf.engine.physics.grid import FatPairs, body_pairs, by_entity, grow_near, start_near
 from polygolf.engine.physics.jit import inlined_kernel, leaf_kernel
 from polygolf.engine.physics.settings import CONTACT_MARGIN
 
@@ -53,10 +53,11 @@ def pick(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, input
     candidates (`Candidates.arrays`: bodies with walls near, as entities; their walls in compressed
     rows; body pairs as entities, in entity order however they were found), and `found` (grown if
     it had to). The walls' rows are views of `first` and `found`: good until the next call."""
-    count, waiting = _near(state, shapes, walls, fat_boxes, inputs, found, np.empty((2, 4)))
-    if waiting:  # `found` must grow: the search again, growing it
-        found, count = bodies_near(state, shapes[5], shapes[6], CONTACT_MARGIN, walls[5], fat_boxes, inputs[0],
-                                   inputs[1], inputs[2], inputs[3], found)
+    both = np.empty((2, 4))
+    q, count, total, waiting = _near(state, shapes, walls, fat_boxes, inputs, found, both)
+    if waiting:  # `found` must grow: on from where the search stopped
+        found, count = grow_near(state, shapes[5], shapes[6], CONTACT_MARGIN, walls[5], fat_boxes, inputs[0], inputs[1],
+                                 inputs[2], inputs[3], found, both, q, count, total, waiting)
     pairs = inputs[4]  # (none)
     if inputs[5]:  # several bodies
         pairs = by_entity(body_pairs(state, shapes[5], shapes[6], CONTACT_MARGIN, False, inputs[6], False, True,
@@ -67,12 +68,11 @@ def pick(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, input
 
 @leaf_kernel
 def _near(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple, found: np.ndarray,
-          both: np.ndarray) -> tuple[int, int]:
-    """`grid.start_near` with the stage's tuples: how many bodies have walls near, and how many boxes
-    wait for room in `found` (0: none). (A leaf takes the tuples apart for nothing; `pick`, inlined
-    in every run of stages, would count a reference to each array it took out, every substep.)"""
+          both: np.ndarray) -> tuple[int, int, int, int]:
+    """`grid.start_near` with the stage's tuples (where it stopped, how many bodies have walls near,
+    how many boxes they hold, how many wait for room in `found`: 0, none). (A leaf takes the tuples
+    apart for nothing; `pick`, inlined in every run of stages, would count a reference to each array
+    it took out, every substep.)"""
     _, _, _, _, _, rows, radius, _, _, _, _ = shapes
     seen, scratch, near, first, _, _, _, _ = inputs
-    _, bodies, _, waiting = start_near(state, rows, radius, CONTACT_MARGIN, walls[5], fat_boxes, seen, scratch, near,
-                                       first, found, both)
-    return bodies, waiting
+    return start_near(state, rows, radius, CONTACT_MARGIN, walls[5], fat_boxes, seen, scratch, near, first, found, both)

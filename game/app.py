@@ -149,12 +149,14 @@ def run_play(course: str, hole: int, theme: str | None, shape: str | None, prese
 
 
 def run_hole_file(path: Path, theme: str | None, shape, preset: str, watch: bool) -> None:
-    """Play one hole file straight away; with `watch`, it is built again each time it is saved."""
-    _check_display()
+    """Play one hole file straight away; with `watch`, it is built again each time it is saved. The
+    file is read first: a broken one is the error to report, display or not."""
     from polygolf.engine.golf.holes import Course, load_hole_file
-    from polygolf.game.flow import ScreenFlow
 
     hole = load_hole_file(path)
+    _check_display()
+    from polygolf.game.flow import ScreenFlow
+
     game = _game_for(None, 1, theme, shape, Course(id=path.stem, name=path.name, holes=[hole]))
     game.preset = preset
     game.guide_seen = True

@@ -27,7 +27,7 @@ from typing import NoReturn
 from polygolf import __version__
 from polygolf.engine.golf.search import EFFORTS
 from polygolf.engine.loading.limits import MAX_SECONDS
-from polygolf.engine.loading.paths import content_roots, named_file
+from polygolf.engine.loading.paths import content_roots, misplaced_folders, named_file
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.engine.physics.presets import PRESETS
 from polygolf.game import startup
@@ -187,6 +187,8 @@ def _validate(args: argparse.Namespace) -> int:
     from polygolf.game.tools.validate import validate_paths
 
     count, problems = validate_paths(args.paths or content_roots())
+    if not args.paths:  # (the player's folders that are files: nothing in them was checked)
+        problems = misplaced_folders("", "holes", "themes", "scenes") + problems
     for problem in problems:
         print(problem, file=sys.stderr)
     warnings = _prove_warnings(args.paths or content_roots(), {p.file for p in problems}) if args.prove else []

@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from polygolf.engine.loading.limits import Colour, Name
-from polygolf.engine.loading.paths import content_roots
+from polygolf.engine.loading.paths import content_roots, misplaced_folders
 from polygolf.engine.loading.scene import Strict_
 from polygolf.engine.loading.yamlsource import ContentError, line_of, load, load_yaml
 
@@ -69,7 +69,7 @@ def load_themes(directories: list[Path] | None = None) -> tuple[list[Theme], lis
     the default), and the problems of those that do not; a broken theme is left out, and so is one
     whose name an earlier one has (the shipped folder's come first); with none left the plain
     fallback is used."""
-    themes, problems = [], []
+    themes, problems = [], misplaced_folders("themes") if directories is None else []
     taken: dict[str, Path] = {}
     for path in theme_files(directories):
         try:

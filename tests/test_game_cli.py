@@ -30,6 +30,17 @@ def test_window_commands_without_a_display_say_so_in_one_line():
         assert len(lines) == 1 and "no display" in lines[0] and "Traceback" not in result.stderr
 
 
+def test_a_broken_hole_file_is_the_error_reported_even_without_a_display(tmp_path):
+    """The file is what the author must fix; the display comes after it (exit 2: bad input)."""
+    hole = tmp_path / "broken.yaml"
+    hole.write_text("name: Broken\npar: 3\ntiles: 7\n")
+    missing = tmp_path / "missing.yaml"
+    for path, message in ((hole, f"{hole}:3: tiles:"), (missing, f"{missing}:0: (file):")):
+        result = run("play", str(path))
+        lines = result.stderr.strip().splitlines()
+        assert result.returncode == 2 and len(lines) == 1 and lines[0].startswith(f"polygolf: {message}"), result.stderr
+
+
 def test_window_commands_under_arcade_headless_say_so_in_one_line_and_render_still_works(tmp_path):
     """ARCADE_HEADLESS is `render`'s offscreen context: the game's GUI cannot even be imported under it."""
     for display in ({}, {"DISPLAY": ":0"}):

@@ -387,6 +387,31 @@ def test_player_content_is_added_to_the_shipped_content(content_copy, tmp_path):
     assert main(["validate"]) == 0
 
 
+def test_a_file_where_the_players_content_folder_belongs_is_said_not_passed_over(content_copy, capsys):
+    """content/, content/holes or content/themes written as a file: nothing in it can be read, and
+    the menu's problems and `validate` say so, each once, at the file."""
+    from polygolf.engine.loading.paths import user_content_dir
+    from polygolf.game.session import Game
+
+    mine = user_content_dir()
+    mine.mkdir(parents=True)
+    (mine / "holes").write_text("courses: []\n")
+    (mine / "themes").write_text("name: Mine\n")
+    game = Game.load()
+    said = [f"{mine / name}:0: (file): a file where a folder belongs" for name in ("holes", "themes")]
+    assert [p.split(": nothing")[0] for p in game.problems] == said
+    assert "meadow" in [c.id for c in game.courses]  # the shipped courses play
+    assert main(["validate"]) == 1
+    assert [line.split(": nothing")[0] for line in capsys.readouterr().err.strip().splitlines()] == said
+    (mine / "holes").unlink()
+    (mine / "themes").unlink()
+    mine.rmdir()
+    mine.write_text("")
+    problems = Game.load().problems
+    assert [p.split(": nothing")[0] for p in problems] == [f"{mine}:0: (file): a file where a folder belongs"]
+    assert main(["validate"]) == 1
+
+
 def test_a_course_may_not_take_another_courses_id(content_copy, capsys):
     """A course's id names its bests and replays: the player's own content may not reuse the shipped
     content's, one file may not name two courses alike, and none may be Random nine."""

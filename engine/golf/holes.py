@@ -10,7 +10,7 @@ from pathlib import Path
 
 from polygolf.engine.golf.layout import HoleLayout, layout_hole, point_clearance, tile_path
 from polygolf.engine.loading.course import CoursesFile, HoleSpec, ParsedHole, TileLibrary, load_library, parse_hole
-from polygolf.engine.loading.paths import HOLES_DIR, content_roots
+from polygolf.engine.loading.paths import HOLES_DIR, content_roots, misplaced_folders
 from polygolf.engine.loading.yamlsource import ContentError, format_loc, line_of, load_yaml, validate
 from polygolf.engine.physics.polygon import bounding_radius
 from polygolf.engine.physics.settings import LINEAR_SLOP
@@ -152,7 +152,7 @@ def load_all_courses() -> tuple[list[Course], list[ContentError]]:
     """The courses of every content folder (shipped, then the player's), and the problems of any
     courses or library file that could not be read at all (their courses are left out)."""
     courses: list[Course] = []
-    problems: list[ContentError] = []
+    problems = misplaced_folders("", "holes")
     for root in content_roots():
         path = root / "holes" / "courses.yaml"
         if path.exists():

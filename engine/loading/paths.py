@@ -19,6 +19,8 @@ from pathlib import Path
 
 from platformdirs import user_data_path
 
+from polygolf.engine.loading.yamlsource import ContentError
+
 
 def content_dir() -> Path:
     """The content root: `POLYGOLF_CONTENT` if set, else the installed `polygolf.content`."""
@@ -41,6 +43,16 @@ def data_dir() -> Path:
 def user_content_dir() -> Path:
     """The player's own content (holes/, themes/), added to the shipped content."""
     return data_dir() / "content"
+
+
+def misplaced_folders(*names: str) -> list[ContentError]:
+    """A problem for each of the player's content folders `names` (in `content`; "" is `content`
+    itself) that is a file: nothing in it is read, which the game and `validate` say rather than
+    pass over."""
+    user = user_content_dir()
+    return [ContentError(user / name, 0, "(file)", "a file where a folder belongs: nothing in it is read (make it "
+                                                   "a folder)")
+            for name in names if (user / name).exists() and not (user / name).is_dir()]
 
 
 def content_roots() -> list[Path]:

@@ -381,9 +381,10 @@ def test_loading_screen_keeps_drawing_while_slow_steps_run_then_moves_on(window,
     pictures: dict[float, object] = {}
     frames, began = 0, time.perf_counter()
     while not view.finished and time.perf_counter() - began < 10.0:
-        view.on_draw()
         fraction = view.fraction
-        if fraction not in pictures:
+        view.on_draw()
+        # (A step ends on its own thread: a frame is this fraction's only if it did not move meanwhile.)
+        if view.fraction == fraction and fraction not in pictures:
             pictures[fraction] = arcade.get_image(0, 0, *window.get_framebuffer_size()).convert("RGB")
         frames += 1
         drawn[0] = frames

@@ -12,7 +12,7 @@ import numpy as np
 
 from polygolf.engine.assembly.effects import effects_for
 from polygolf.engine.assembly.simulation import Simulation
-from polygolf.engine.assembly.spec import WorldSpec
+from polygolf.engine.assembly.spec import DynamicPart, WorldSpec
 from polygolf.engine.assembly.stages import stages_for
 from polygolf.engine.components import Body, Collider, Material, Name, Wall
 from polygolf.engine.components.resources import Resources, StaticWorld, StepConfig
@@ -46,9 +46,20 @@ def make_body(outline: polygon.Outline, position: Sequence[float], density: floa
               asleep: bool = False) -> Body:
     """Dynamic body with the exact mass and inertia of its outline. `rotates=False` (no `spin`
     effect) gives infinite inertia: contacts then cannot turn it."""
+    return Body.on_rows([_body_row(outline, position, density, angle, velocity, spin, rotates, asleep)])[0]
+
+
+def make_bodies(parts: Sequence[DynamicPart], rotates: bool) -> list[Body]:
+    """`make_body` of each part, their rows made as one array."""
+    return Body.on_rows([_body_row(p.outline, p.position, p.density, p.angle, p.velocity, p.spin, rotates, p.asleep)
+                         for p in parts])
+
+
+def _body_row(outline: polygon.Outline, position: Sequence[float], density: float, angle: float,
+              velocity: Sequence[float], spin: float, rotates: bool, asleep: bool) -> list[float]:
     mass, inertia, inv_mass, inv_inertia = _masses(tuple(outline), density, rotates)
-    return Body(float(position[0]), float(position[1]), angle, float(velocity[0]), float(velocity[1]),
-                spin if rotates else 0.0, mass, inertia, inv_mass, inv_inertia, asleep)
+    return Body.row(float(position[0]), float(position[1]), angle, float(velocity[0]), float(velocity[1]),
+                    spin if rotates else 0.0, mass, inertia, inv_mass, inv_inertia, asleep)
 
 
 @functools.lru_cache(maxsize=256)
@@ -119,22 +130,19 @@ def assemble(spec: WorldSpec, knobs: Knobs | str | None = None) -> Simulation:
     world = f"{spec.name}-{next(_world_ids)}"
     esper.switch_world(world)
     names: dict[int, str] = {}
-    radius = 0.0
     # Bodies of one outline and one material share their collider (a component nothing changes): a
     # fan of shots puts a thousand copies of one ball in a world.
     colliders: dict[tuple[int, int], Collider] = {}
-    for part in spec.bodies:
-        body = make_body(part.outline, part.position, part.density, part.angle, part.velocity, part.spin, rotates,
-                         part.asleep)
+    for part, body in zip(spec.bodies, make_bodies(spec.bodies, rotates)):
         same = (id(part.outline), id(part.material))
         collider = colliders.get(same)
         if collider is None:
             collider = colliders[same] = make_collider(part.outline, part.material)
-        radius = max(radius, collider.radius)
         components: list[object] = [body, collider, Name(part.name), *part.extras]
         if part.drag is not None:
             components.append(part.drag)
         names[esper.create_entity(*components)] = part.name
+    radius = max((collider.radius for collider in colliders.values()), default=0.0)
     for components in spec.entities:
         esper.create_entity(*components)
 

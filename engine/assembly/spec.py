@@ -34,7 +34,8 @@ class DynamicPart:
     def fastest(self) -> float:
         if self.top_speed is not None:
             return self.top_speed
-        return math.hypot(*self.velocity) + abs(self.spin) * bounding_radius(self.outline)
+        speed = math.hypot(*self.velocity)  # (the rim's share only if it turns: a fan's thousand balls do not)
+        return speed + abs(self.spin) * bounding_radius(self.outline) if self.spin else speed
 
 
 @dataclass

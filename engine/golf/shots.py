@@ -107,7 +107,7 @@ def simulate_shots(hole: Hole, shots: Sequence[Shot], preset: Knobs | str = "bal
         paths: list[list[tuple[float, float]]] = [[] for _ in shots]
         contact: list[int | None] = [None] * len(shots)
         contact_at: list[tuple[float, float] | None] = [None] * len(shots)
-        index = {ent: k for k, (ent, _) in enumerate(rows)}
+        index = {ent: k for k, (ent, _) in enumerate(rows)} if path or until_contact else {}
         balls, running = Selection(), np.ones(len(shots), dtype=np.bool_)
         # Each ball's rest as last seen, and room for the balls that came to rest since (`came_to_rest`).
         asleep, resting = np.zeros(len(shots), dtype=np.bool_), np.empty(len(shots), dtype=np.int64)

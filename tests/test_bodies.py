@@ -64,6 +64,19 @@ def test_a_handle_reads_and_writes_its_row():
     assert body.asleep and (body.vx, body.vy, body.spin) == (0.0, 0.0, 0.0)
 
 
+def test_bodies_made_at_once_are_the_bodies_made_one_by_one_on_rows_of_one_array():
+    made = [(1.0, -2.0, 0.3, 4.0, 5.0, -6.0, 2.0, 0.5, 0.5, 2.0, False), (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0,
+                                                                        1.0, True)]
+    together = Body.on_rows([Body.row(*values) for values in made])
+    for body, values in zip(together, made):
+        alone = Body(*values)
+        assert body._row.tolist() == alone._row.tolist() and body.asleep == values[-1]
+    assert together[0]._row.base is together[1]._row.base is not None  # one array, a row each
+    together[1].x = 9.0
+    assert (together[0].x, together[1].x) == (1.0, 9.0)
+    assert Body.on_rows([]) == []
+
+
 def test_gathering_moves_every_body_into_one_array_and_keeps_its_values():
     esper.switch_world("bodies-test")
     try:

@@ -135,8 +135,16 @@ def test_every_screen_draws_something(window, game, shots_dir):
     key(window, arcade.key.ESCAPE)  # now pauses
     assert isinstance(window.current_view, PauseView)
     assert_not_blank(snapshot(window, shots_dir, "pause"), "pause")
-    show(window, BetweenView(game, round_, round_.finish_hole([(3, False, 0)]), flow))
+    between = show(window, BetweenView(game, round_, round_.finish_hole([(3, False, 0)]), flow))
     assert_not_blank(snapshot(window, shots_dir, "between"), "between")
+    # Between holes: Enter goes on (the first button has the focus), Esc leaves the round for the menu.
+    assert between.buttons["next"].rect.right < between.buttons["menu"].rect.left  # side by side, not overlapping
+    key(window, arcade.key.ESCAPE)
+    assert isinstance(window.current_view, MenuView) and game.round is None
+    game.round = round_
+    between = show(window, BetweenView(game, round_, round_.finish_hole([(3, False, 0)]), flow))
+    key(window, arcade.key.ENTER)
+    assert isinstance(window.current_view, PlayView) and window.current_view.round.number == 3
     while not round_.over:
         round_.finish_hole([(4, False, 0)])
     show(window, ResultsView(game, round_, flow))

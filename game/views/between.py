@@ -4,7 +4,7 @@ the best ever kept for it, and the next hole's number and par."""
 from __future__ import annotations
 
 import arcade
-from arcade.gui import UIView
+from arcade.gui import UIBoxLayout, UIView
 
 from polygolf.game.drawing import draw_backed, fit_width
 from polygolf.game.session import Game, HoleResult, Round, golf_name, par_text, penalty_text, strokes_text
@@ -13,6 +13,7 @@ from polygolf.game.views.widgets import KeyboardButtons, themed_button, title
 
 PLAYERS_FONT = 17
 BUTTON_TOP = 108  # px: the button's top edge above the window's bottom
+BUTTON_GAP = 10  # px between the two buttons
 GAPS = (65.0, 45.0, 35.0, 65.0)  # px: headline to detail, to the players' lines, their end to the best, to the next
 
 
@@ -65,19 +66,31 @@ class BetweenView(UIView):
         self._squeeze, self._top = 1.0, 0.0
         button = themed_button(theme, "Next hole" if upcoming else "Scorecard", width=260, clicks=self.game.sound)
         button.on_click = self.on_continue  # type: ignore[method-assign]
+        leave = themed_button(theme, "Main menu", width=200, clicks=self.game.sound)
+        leave.on_click = self.on_menu  # type: ignore[method-assign]
+        self.buttons = {"next": button, "menu": leave}
+        row = UIBoxLayout(vertical=False, space_between=BUTTON_GAP)
+        row.add(button)
+        row.add(leave)
         anchor = KeyboardButtons()
-        anchor.add(button, anchor_x="center_x", anchor_y="bottom", align_y=BUTTON_TOP - 48)
+        anchor.add(row, anchor_x="center_x", anchor_y="bottom", align_y=BUTTON_TOP - 48)
         self.ui.add(anchor)
-        anchor.focus()
+        anchor.focus(button)
 
     def on_continue(self, _event=None) -> None:
         self.flow.next_hole()
 
+    def on_menu(self, _event=None) -> None:
+        """Leave the round, as the pause menu's Main menu does (a round is kept only when finished)."""
+        self.flow.menu()
+
     def on_key_press(self, symbol: int, modifiers: int) -> None:
         if window_key(self.window, self.game, symbol):
             return
-        if symbol in (arcade.key.ENTER, arcade.key.RETURN, arcade.key.SPACE):
+        if symbol == arcade.key.SPACE:  # (Enter presses the focused button: Next hole unless the arrows moved)
             self.on_continue()
+        elif symbol == arcade.key.ESCAPE:
+            self.on_menu()
 
     def _fit(self, w: int, h: int) -> None:
         """Every line within the window: each player's line whole (all smaller if the widest does not

@@ -209,14 +209,15 @@ def arcade_run(game: Game | None = None) -> None:
 
 
 def render_hole(course: str, hole: int, theme: str | None, shape: str | None, out: Path,
-                size: tuple[int, int] = WINDOW_SIZE, seed: int | None = None) -> Path:
-    """Draw a hole as the play view shows it, headless, to a PNG."""
+                size: tuple[int, int] = WINDOW_SIZE, seed: int | None = None, players: list[str] | None = None) -> Path:
+    """Draw a hole as the play view shows it, headless, to a PNG (`players`: their names, a ball each
+    across the tee; default as saved)."""
     os.environ.setdefault("ARCADE_HEADLESS", "1")
     import arcade
 
     from polygolf.game.views.play import PlayView
 
-    game = _game_for(course, hole, theme, shape, seed=seed)
+    game = _game_for(course, hole, theme, shape, seed=seed, players=players)
     broken = game.course.holes[hole - 1]
     if isinstance(broken, Exception):
         raise broken

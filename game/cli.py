@@ -496,7 +496,8 @@ def _render(args: argparse.Namespace) -> int:
             raise ValueError("--seed is for random-nine")
         if args.course == "random-nine" and args.hole > NINE:  # said before minutes of building
             raise ValueError(f"random-nine has holes 1 to {NINE}")
-        out = _window(render_hole, args.course, args.hole, args.theme, args.shape, args.out, WINDOW_SIZE, args.seed)
+        out = _window(render_hole, args.course, args.hole, args.theme, args.shape, args.out, WINDOW_SIZE, args.seed,
+                      player_names(args.players, None))
     except OSError as exc:
         print(f"polygolf: --out: cannot write {args.out}: {exc.strerror or exc}", file=sys.stderr)
         return EXIT_CONTENT
@@ -625,6 +626,8 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument("--shape", type=shape_arg, default=None)
     render.add_argument("--out", type=png_arg, required=True, help="PNG file to write (folders are made)")
     render.add_argument("--seed", type=seed_arg, default=None, help="with random-nine: the course's seed")
+    render.add_argument("--players", type=players_arg, default=None,
+                        help="1 to 4 balls across the tee (default: as chosen last in the menu)")
     render.set_defaults(run=_render)
 
     val = sub.add_parser("validate", help="check content files (default: the shipped and your own content)")

@@ -136,18 +136,21 @@ SLOPE_TINT = 0.5  # a slope's floor: the green this far toward the slope colour,
 class HoleArt:
     """The static picture of a hole, one batched draw call; windmills are drawn moving on top."""
 
-    def __init__(self, layout: HoleLayout, theme: Theme, ball_radius: float = 0.5) -> None:
+    def __init__(self, layout: HoleLayout, theme: Theme, ball_radius: float = 0.5,
+                 tees: Sequence[tuple[float, float]] = ()) -> None:
         shapes: ShapeElementList = ShapeElementList()
         rng = random.Random(TEXTURE_SEED)
         size = layout.tile_size
         for x0, y0, x1, y1 in layout.floor:
             colour = theme.rgba("green_alt" if (round(x0 / size) + round(y0 / size)) % 2 else "green")
             shapes.append(create_rectangle_filled((x0 + x1) / 2, (y0 + y1) / 2, x1 - x0 + 0.02, y1 - y0 + 0.02, colour))
-        # The tee: a mat the ball (even a star's tips) sits inside.
-        tx, ty = layout.tee
-        mat = 2 * ball_radius + 0.3
-        shapes.append(create_rectangle_filled(tx, ty, mat + 0.1, mat + 0.1, theme.rgba("tee")))
-        shapes.append(create_rectangle_filled(tx, ty, mat, mat, theme.rgba("green")))
+        # The tee: a mat every ball on it (each player's spot, `tees`; even a star's tips) sits inside.
+        xs, ys = zip(*(tees or [layout.tee]))
+        half = ball_radius + 0.15
+        left, right, bottom, top = min(xs) - half, max(xs) + half, min(ys) - half, max(ys) + half
+        tx, ty, wide, high = (left + right) / 2, (bottom + top) / 2, right - left, top - bottom
+        shapes.append(create_rectangle_filled(tx, ty, wide + 0.1, high + 0.1, theme.rgba("tee")))
+        shapes.append(create_rectangle_filled(tx, ty, wide, high, theme.rgba("green")))
         zones = sorted(layout.zones, key=lambda z: z[0] == "slope")
         for kind, outline, push in zones:
             colour = theme.rgba(ZONE_COLOURS[kind])

@@ -67,6 +67,23 @@ def test_render_draws_a_hole_to_png_without_a_window(tmp_path):
     assert (np.abs(image - green).sum(axis=2) < 12).mean() > 0.1
 
 
+def test_the_tee_mat_holds_every_players_ball(tmp_path):
+    """One ball: a square mat about it; four across Meadow 1's tee: one long mat about them all."""
+    from polygolf.game.theme import find_theme, load_themes
+
+    tee = np.array(find_theme(load_themes()[0], "grass").rgba("tee")[:3])
+    sides = {}
+    for players in (1, 4):
+        out = tmp_path / f"tee-{players}.png"
+        result = run("render", "meadow", "1", "--theme", "grass", "--players", str(players), "--out", str(out))
+        assert result.returncode == 0, result.stderr
+        image = np.asarray(Image.open(out), dtype=np.int16)[60:, :640]  # below the HUD, the tee's half
+        rows, cols = np.nonzero((image == tee).all(axis=2))
+        sides[players] = (cols.max() - cols.min(), rows.max() - rows.min())
+    (w1, h1), (w4, h4) = sides[1], sides[4]
+    assert 0.9 < h1 / w1 < 1.1 and abs(w4 - w1) <= 2 and h4 > 3.5 * w4, sides
+
+
 def test_render_of_an_unknown_course_or_shape_is_one_line(tmp_path):
     for args in (["render", "nowhere", "1"], ["render", "meadow", "1", "--shape", "blob"],
                  ["render", "meadow", "12"]):

@@ -118,7 +118,8 @@ class PlayView(arcade.View):
         if self.world is None:
             return
         theme = self.game.theme
-        self.hole_art = HoleArt(self.world.layout, theme, self.world.collider.radius)
+        self.hole_art = HoleArt(self.world.layout, theme, self.world.collider.radius,
+                                [p.tee for p in self.world.players])
         self.ball_arts = [PlayerBallArt(self.world.outline, theme, seat) for seat in range(len(self.world.players))]
         self.seat_of = {p.entity: seat for seat, p in enumerate(self.world.players)}
         self.ball_poses = [Poses(self.ball_pose(seat)) for seat in range(len(self.world.players))]

@@ -54,7 +54,7 @@ class ReplayView(arcade.View):
         hole = self.session.hole
         if hole is None:
             return
-        self.hole_art = HoleArt(hole.layout, self.game.theme)
+        self.hole_art = HoleArt(hole.layout, self.game.theme, hole.collider.radius, [p.tee for p in hole.players])
         self.ball_arts = [PlayerBallArt(hole.outline, self.game.theme, seat) for seat in range(len(hole.players))]
         self.done_for = 0.0
         self.fit()

@@ -57,6 +57,19 @@ def test_the_same_seed_gives_the_same_text_and_other_seeds_other_holes(library):
     assert generate_hole(1234, library, number=2) != first  # Random nine's second hole of the seed
 
 
+def test_a_draw_is_loaded_from_its_text_without_a_file(library, monkeypatch):
+    """Nothing written, not even to a temporary folder: a worker stopped mid-draw (Esc during Random
+    nine's build stops them) left its temporary folder behind."""
+    def refuse(*_args, **_kwargs):
+        raise AssertionError("generate wrote a file")
+
+    text = generate_hole(77, library)
+    monkeypatch.setattr(Path, "write_text", refuse)
+    monkeypatch.setattr("tempfile.mkdtemp", refuse)
+    made = generate(77, library)
+    assert made.text == text and made.hole.id == "random-77-1"
+
+
 @pytest.mark.parametrize("seed", [0, 7, 99, 31337])
 def test_generated_holes_validate_and_load(tmp_path, library, seed, capsys):
     path = tmp_path / "holes" / f"random-{seed}.yaml"

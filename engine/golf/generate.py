@@ -22,7 +22,6 @@ from __future__ import annotations
 import math
 import os
 import random
-import tempfile
 import time
 from collections import Counter, deque
 from collections.abc import Callable
@@ -390,33 +389,33 @@ def generate(seed: int, library: TileLibrary, *, number: int = 1, prove: Prove |
     started = time.perf_counter()
     refused: list[str] = []
     proofs = 0
-    with tempfile.TemporaryDirectory(prefix="polygolf-generate-") as folder:
-        path = Path(folder) / f"random-{seed}-{number}.yaml"
-        for draw in range(max_draws):
-            plan = plan_hole(seed, library, number, draw)
-            text = plan.text(schema=schema)
-            path.write_text(text, encoding="utf-8")
-            try:
-                hole = load_hole(path, library)
-            except ContentError as exc:
-                refused.append(f"draw {draw}: {exc.field}: {exc.message}")
-                continue
-            if not dry_route(hole.layout, library.ball.radius, hole.layout.tee, hole.layout.cup):
-                refused.append(f"draw {draw}: no dry way from the tee to the cup")
-                continue
-            if prove is None:
-                return Generated(text, plan, hole, None, time.perf_counter() - started, refused)
-            proofs += 1
-            proof = prove(hole)
-            if proof.sunk:
-                par = max(1, min(20, int(proof.estimated_par)))
-                return Generated(plan.text(par, schema, proven=True), plan, hole, proof,
-                                 time.perf_counter() - started, refused)
-            refused.append(f"draw {draw}: the golfer did not sink it")
-            if progress is not None:
-                progress(f"hole {number}: the golfer did not sink draw {draw}; drawing again")
-            if proofs >= max_proofs:
-                break
+    # Each draw is loaded from its text, as a file of this name would be (no file: a worker stopped
+    # mid-draw, as Esc during Random nine's build does, leaves nothing behind).
+    path = Path(f"random-{seed}-{number}.yaml")
+    for draw in range(max_draws):
+        plan = plan_hole(seed, library, number, draw)
+        text = plan.text(schema=schema)
+        try:
+            hole = load_hole(path, library, text)
+        except ContentError as exc:
+            refused.append(f"draw {draw}: {exc.field}: {exc.message}")
+            continue
+        if not dry_route(hole.layout, library.ball.radius, hole.layout.tee, hole.layout.cup):
+            refused.append(f"draw {draw}: no dry way from the tee to the cup")
+            continue
+        if prove is None:
+            return Generated(text, plan, hole, None, time.perf_counter() - started, refused)
+        proofs += 1
+        proof = prove(hole)
+        if proof.sunk:
+            par = max(1, min(20, int(proof.estimated_par)))
+            return Generated(plan.text(par, schema, proven=True), plan, hole, proof,
+                             time.perf_counter() - started, refused)
+        refused.append(f"draw {draw}: the golfer did not sink it")
+        if progress is not None:
+            progress(f"hole {number}: the golfer did not sink draw {draw}; drawing again")
+        if proofs >= max_proofs:
+            break
     last = f" (last: {refused[-1]})" if refused else ""
     raise GenerateError(f"seed {seed}, hole {number}: no acceptable hole in {len(refused)} draws, "
                         f"{proofs} of them tried by the golfer{last}")

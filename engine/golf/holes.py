@@ -29,10 +29,11 @@ class Hole:
     layout: HoleLayout
 
 
-def load_hole(path: str | Path, library: TileLibrary) -> Hole:
-    """Load a hole, lay it out and check it: the cup can be reached from the tee through open
-    borders, and neither the tee nor the cup is blocked, in water or in a windmill's sweep."""
-    parsed = parse_hole(path, library)
+def load_hole(path: str | Path, library: TileLibrary, text: str | None = None) -> Hole:
+    """Load a hole (its file, or `text` named `path`), lay it out and check it: the cup can be
+    reached from the tee through open borders, and neither the tee nor the cup is blocked, in water
+    or in a windmill's sweep."""
+    parsed = parse_hole(path, library, text)
     spec = parsed.spec
     if len(spec.tiles) == 1:
         raise parsed.error(("tiles",), "a hole needs two tiles or more: the first holds the tee and the last the "

@@ -195,12 +195,13 @@ class ParsedHole:
         return ContentError(self.path, line_of(loc, self.lines), format_loc(loc), message)
 
 
-def parse_hole(path: str | Path, library: TileLibrary) -> ParsedHole:
-    """Load a hole file and check it against the library: names exist, tiles do not overlap, open
-    sides meet open sides; tiles without `borders` open toward their neighbours. Every problem is
-    reported, not only the first. (Geometry — reachability, tee and cup — is golf's: `golf.holes`.)"""
+def parse_hole(path: str | Path, library: TileLibrary, text: str | None = None) -> ParsedHole:
+    """Load a hole file (or `text` named `path`) and check it against the library: names exist,
+    tiles do not overlap, open sides meet open sides; tiles without `borders` open toward their
+    neighbours. Every problem is reported, not only the first. (Geometry — reachability, tee and
+    cup — is golf's: `golf.holes`.)"""
     path = Path(path)
-    data, lines = load_yaml(path)
+    data, lines = load_yaml(path, text)
     parsed = ParsedHole(path, validate(HoleSpec, data, lines, path), lines)
     spec, fail = parsed.spec, parsed.error
     problems: list[ContentError] = []

@@ -202,10 +202,11 @@ def read_text(path: str | Path) -> str:
     return text
 
 
-def load_yaml(path: str | Path) -> tuple[Any, dict[Loc, int]]:
-    """Parse a YAML file to plain data and a map from value paths to 1-based line numbers."""
+def load_yaml(path: str | Path, text: str | None = None) -> tuple[Any, dict[Loc, int]]:
+    """Parse a YAML file to plain data and a map from value paths to 1-based line numbers; `text`:
+    the file's text made in memory (a generated hole), `path` only naming it."""
     file = str(path)
-    text = read_text(path)
+    text = read_text(path) if text is None else text
     try:
         _check_events(text, file)
         root = yaml.compose(text, Loader=_Loader)

@@ -137,10 +137,14 @@ def build_nine_here(seed: int):
 
 def run_play(course: str, hole: int, theme: str | None, shape: str | None, preset: str,
              players: list[str] | None = None, seed: int | None = None) -> None:
-    _check_display()  # before arcade.gui is imported, and before random-nine's minutes of building
+    from polygolf.game.session import RANDOM_NINE
+
+    if course == RANDOM_NINE:
+        _check_display()  # before random-nine's minutes of building
+    game = _game_for(course, hole, theme, shape, players=players, seed=seed)  # (a bad choice is said first)
+    _check_display()  # before arcade.gui is imported
     from polygolf.game.flow import ScreenFlow
 
-    game = _game_for(course, hole, theme, shape, players=players, seed=seed)
     game.preset = preset
     game.guide_seen = True
     flow = ScreenFlow(make_window(), game)

@@ -27,7 +27,7 @@ from typing import NoReturn
 from polygolf import __version__
 from polygolf.engine.golf.search import EFFORTS
 from polygolf.engine.loading.limits import MAX_SECONDS
-from polygolf.engine.loading.paths import content_roots, misplaced_folders, named_file
+from polygolf.engine.loading.paths import content_names, content_roots, misplaced_folders, named_file
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.engine.physics.presets import PRESETS
 from polygolf.game import startup
@@ -153,7 +153,10 @@ def _simulate(args: argparse.Namespace) -> int:
     from polygolf.engine.golf.scenes import build_scene_file
 
     frames = round(args.seconds * 60)
-    with build_scene_file(named_file(args.scene, "scenes"), args.preset) as sim:
+    path = named_file(args.scene, "scenes")
+    if not path.exists() and path == Path(args.scene) and len(path.parts) == 1 and not path.suffix:
+        raise KeyError(f"no scene {args.scene!r}: give a scene file, or one of {', '.join(content_names('scenes'))}")
+    with build_scene_file(path, args.preset) as sim:
         startup.prepare_physics()
         started = time.perf_counter()
         shown = False
@@ -174,8 +177,10 @@ def _simulate(args: argparse.Namespace) -> int:
         state = "at rest" if b["at_rest"] else f"v=({b['velocity'][0]:.4g}, {b['velocity'][1]:.4g}) m/s"
         print(f"  {b['name']}: at ({b['position'][0]:.4g}, {b['position'][1]:.4g}) m, "
               f"{b['angle']:.4g} deg, spin {b['spin']:.4g} rad/s, {state}")
-    print(f"  max penetration {m['max_penetration']:.3g} m, max energy ratio {m['max_energy_ratio']}, "
-          f"final {m['final_energy_ratio']}, {m['wall_ms']:.1f} ms")
+    ratios = [f"{ratio:.4g}" if ratio is not None else "n/a (started at rest)"
+              for ratio in (m["max_energy_ratio"], m["final_energy_ratio"])]
+    print(f"  max penetration {m['max_penetration']:.3g} m, max energy ratio {ratios[0]}, final {ratios[1]}, "
+          f"{m['wall_ms']:.1f} ms")
     return 0
 
 

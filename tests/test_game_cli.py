@@ -30,6 +30,13 @@ def test_window_commands_without_a_display_say_so_in_one_line():
         assert len(lines) == 1 and "no display" in lines[0] and "Traceback" not in result.stderr
 
 
+def test_an_unknown_course_or_hole_is_the_error_reported_even_without_a_display():
+    for args, message in ((["--course", "nosuch"], "no course 'nosuch'"), (["--hole", "42"], "holes 1 to 9")):
+        result = run("play", *args)
+        lines = result.stderr.strip().splitlines()
+        assert result.returncode == 2 and len(lines) == 1 and message in lines[0], result.stderr
+
+
 def test_a_broken_hole_file_is_the_error_reported_even_without_a_display(tmp_path):
     """The file is what the author must fix; the display comes after it (exit 2: bad input)."""
     hole = tmp_path / "broken.yaml"

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import sys
 import textwrap
@@ -99,6 +100,19 @@ def test_simulate_malformed_scene_exits_2_with_one_line(tmp_path, capsys):
 def test_missing_scene_file_exits_2(tmp_path, capsys):
     assert main(["simulate", str(tmp_path / "nope.yaml")]) == 2
     assert "nope.yaml" in capsys.readouterr().err
+
+
+def test_an_unknown_scene_name_lists_the_scenes_and_the_text_report_reads_as_text(capsys):
+    assert main(["simulate", "nosuch"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("polygolf: no scene 'nosuch': give a scene file, or one of ") \
+        and "pile" in err[0] and "flat-wall" in err[0]
+    assert main(["simulate", "stack-drop", "--seconds", "1"]) == 0  # starts at rest: no ratio to give
+    last = capsys.readouterr().out.strip().splitlines()[-1]
+    assert "max energy ratio n/a (started at rest)" in last and "None" not in last
+    assert main(["simulate", "flat-wall", "--seconds", "1"]) == 0
+    last = capsys.readouterr().out.strip().splitlines()[-1]
+    assert re.search(r"max energy ratio 1(\.\d{1,3})?, final 0\.2\d{0,3},", last), last
 
 
 def test_listed_effects_decide_the_pipeline(tmp_path):

@@ -79,6 +79,11 @@ def named_file(arg: str | Path, folder: str) -> Path:
     return path
 
 
+def content_names(folder: str) -> list[str]:
+    """The names (file stems) of the content folders' files in `folder` (scenes, themes), sorted."""
+    return sorted({path.stem for root in content_roots() for path in (root / folder).glob("*.yaml")})
+
+
 @contextmanager
 def exclusive(path: Path, waiting: Callable[[], None] | None = None) -> Iterator[None]:
     """An exclusive lock between processes (two games on one machine) on the file `path`, made if

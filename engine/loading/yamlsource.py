@@ -246,6 +246,8 @@ def _message(err: dict) -> str:
 
 
 _TYPE_TAGS = {"str", "int", "float", "bool", "list", "tuple", "dict", "none", "set"}
+_KINDS = {type(None): "nothing (an empty file)", list: "a list", str: "text", int: "a number", float: "a number",
+          bool: "true or false"}
 
 
 def _field_path(loc: tuple, data: Any) -> Loc:
@@ -273,6 +275,11 @@ def validate(model: type[M], data: Any, lines: dict[Loc, int], file: str | Path)
     """Validate `data` into `model`; every pydantic error becomes a line of the ContentError. Where a
     union's branches disagree, the deepest explanation wins ("n: should be 'open' or 'wall'" over
     "should be a string")."""
+    if not isinstance(data, dict) and "properties" in model.model_json_schema():  # the file is not a mapping
+        what = _KINDS.get(type(data), f"a {type(data).__name__}")
+        keys = ", ".join(name for name, info in model.model_fields.items() if info.is_required())
+        raise ContentError(file, line_of((), lines), "(top level)",
+                           f"the file should be a mapping of keys{f' ({keys}, ...)' if keys else ''}, not {what}")
     try:
         return model.model_validate(data)
     except ValidationError as exc:

@@ -181,6 +181,9 @@ CASES = [
     ("scene-bodies-empty", "scene", _sub(_sub(SCENE, "bodies:\n", "bodies: []\nx:\n"), "  - name: ball\n", ""),
      None, None, ""),
     ("scene-empty-file", "scene", "", 1, "(top level)", "should be a mapping"),
+    ("scene-heap", "scene", "name: heap\nbodies:\n" + "".join(f"  - {{name: b{k}, shape: {{regular: 3, radius: 1}}, "
+                                                          "position: [0, 0]}\n" for k in range(20)),
+     1, "(top level)", "190 pairs of bodies start within reach of each other"),
     ("scene-binary", "scene", bytes(range(256)) * 4, None, "(file)", "not UTF-8"),
     ("scene-too-big", "scene", SCENE + "# " + "x" * (1 << 20) + "\n", 0, "(file)", "at most 1024 KiB"),
 ]

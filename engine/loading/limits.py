@@ -9,6 +9,7 @@ import re
 import unicodedata
 from typing import Annotated
 
+import numpy as np
 from pydantic import AfterValidator, Field, Strict, StringConstraints
 
 from polygolf.engine.physics.polygon import MAX_SIDES, MIN_SIDES
@@ -31,6 +32,7 @@ MAX_FRICTION = 10.0
 MAX_DRAG = 1_000.0  # 1/s or m/s²
 MAX_GRAVITY = 1_000.0  # m/s² a component
 MAX_BODIES, MAX_WALLS = 2_000, 5_000
+MAX_START_PAIRS = 8  # pairs of bodies a body, at most, that start within reach (bounding circles overlapping)
 MAX_NAME = 100  # characters
 MIN_TILE, MAX_TILE = 1.0, 100.0  # m
 MAX_TILE_INDEX = 100  # |column|, |row|
@@ -65,6 +67,8 @@ LIMITS: list[tuple[str, str]] = [
     ("drag rates (linear, angular, rolling)", f"0 – {MAX_DRAG:,.0f}"),
     ("gravity components", f"|g| ≤ {MAX_GRAVITY:,.0f} m/s²"),
     ("bodies, walls in a scene", f"1 – {MAX_BODIES:,}, ≤ {MAX_WALLS:,}"),
+    ("bodies starting within reach of each other", f"≤ {MAX_START_PAIRS} pairs a body (bounding circles "
+                                                   "overlapping: a pile touches, a heap in one spot is refused)"),
     ("names", f"1 – {MAX_NAME} characters, no control characters (one line on the HUD, the scorecard and in messages)"),
     ("tile size", f"{MIN_TILE:g} – {MAX_TILE:g} m; wall thickness, ball and cup radius ≤ a quarter of it"),
     ("tile positions `at`", f"|column|, |row| ≤ {MAX_TILE_INDEX}; ≤ {MAX_TILES} tiles a hole"),
@@ -133,6 +137,20 @@ FileName = Annotated[str, Strict(), _matching(r"[A-Za-z0-9][A-Za-z0-9_-]{0,99}",
                                               "(letters, digits, '-', '_')")]
 Colour = Annotated[str, Strict(), _matching(r"#([0-9a-fA-F]{6}|[0-9a-fA-F]{8})",
                                             'a colour is "#RRGGBB" or "#RRGGBBAA"')]
+
+
+def check_start_pairs(positions: np.ndarray, radii: np.ndarray) -> None:
+    """Raise if more pairs of bodies start within reach of each other than MAX_START_PAIRS a body:
+    a heap of bodies in one spot makes every pair a contact (2 000 in one spot took minutes and
+    gigabytes a frame), where a pile of bodies that touch makes a few a body."""
+    limit, pairs = MAX_START_PAIRS * len(radii), 0
+    for start in range(0, len(radii), 256):  # (rows of the distance matrix a block at a time)
+        gap = np.hypot(*(positions[start:start + 256, None, :] - positions[None, :, :]).transpose(2, 0, 1))
+        reach = radii[start:start + 256, None] + radii[None, :]
+        pairs += int(np.triu(gap < reach, k=start + 1).sum())
+    if pairs > limit:
+        raise ValueError(f"{pairs:,} pairs of bodies start within reach of each other (their bounding circles "
+                         f"overlap): at most {MAX_START_PAIRS} a body ({limit:,} here); spread them out")
 
 
 def check_vertex_budget(outlines: int) -> None:

@@ -10,6 +10,7 @@ import math
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
+import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 from polygolf.engine.assembly.assemble import assemble
@@ -34,6 +35,7 @@ from polygolf.engine.loading.limits import (
     Seed,
     Speed,
     Spin,
+    check_start_pairs,
     check_vertex_budget,
     count,
 )
@@ -214,6 +216,13 @@ class Scene(Strict_):
     @model_validator(mode="after")
     def _vertex_budget(self) -> Scene:
         check_vertex_budget(sum(len(b.shape.outline()) for b in self.bodies) + sum(w.vertex_count for w in self.walls))
+        return self
+
+    @model_validator(mode="after")
+    def _room_to_start(self) -> Scene:
+        if self.collide_bodies:
+            check_start_pairs(np.array([b.position for b in self.bodies], dtype=np.float64).reshape(-1, 2),
+                              np.array([polygon.bounding_radius(b.shape.outline()) for b in self.bodies]))
         return self
 
     @model_validator(mode="after")

@@ -181,6 +181,11 @@ CASES = [
     ("scene-bodies-empty", "scene", _sub(_sub(SCENE, "bodies:\n", "bodies: []\nx:\n"), "  - name: ball\n", ""),
      None, None, ""),
     ("scene-empty-file", "scene", "", 1, "(top level)", "should be a mapping"),
+    ("scene-name-blank", "scene", _sub(SCENE, "name: ball", 'name: "   "'), 3, "bodies[0].name", "spaces"),
+    ("scene-name-invisible", "scene", _sub(SCENE, "name: ball", 'name: "\\u200b"'), 3, "bodies[0].name",
+     "digit or sign that shows"),
+    ("scene-name-override", "scene", _sub(SCENE, "name: ball", 'name: "\\u202eball"'), 3, "bodies[0].name",
+     "U+202E"),
     ("scene-heap", "scene", "name: heap\nbodies:\n" + "".join(f"  - {{name: b{k}, shape: {{regular: 3, radius: 1}}, "
                                                           "position: [0, 0]}\n" for k in range(20)),
      1, "(top level)", "190 pairs of bodies start within reach of each other"),
@@ -433,6 +438,21 @@ def test_a_course_may_not_take_another_courses_id(content_copy, capsys):
     assert main(["validate"]) == 0
 
 
+def test_every_problem_of_a_courses_file_is_reported_at_once(content_copy, capsys):
+    """Names that refuse the file and unknown holes alike: fixing one should not reveal the next."""
+    from polygolf.engine.loading.paths import user_content_dir
+
+    mine = user_content_dir() / "holes"
+    mine.mkdir(parents=True)
+    (mine / "good.yaml").write_text("name: Good\npar: 2\ntiles:\n  - {at: [0, 0]}\n  - {at: [1, 0]}\n")
+    (mine / "courses.yaml").write_text("courses:\n  - name: RANDOM NINE\n    holes: [good]\n  - name: 'a:b'\n"
+                                       "    holes: [good, missing]\n")
+    assert main(["validate", str(mine / "courses.yaml")]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert [line.split(": ")[1] for line in err] == ["courses[0].name", "courses[1].name", "courses[1].holes[1]"], err
+    assert "taken by Random nine" in err[0] and "may not hold ':'" in err[1] and "no hole file missing.yaml" in err[2]
+
+
 def test_a_theme_may_not_take_another_themes_name(content_copy, capsys):
     """The command line and the settings find a theme by its name in any case: the player's theme
     named like a shipped one is left out, with one line at its name, and validate says the same."""
@@ -495,7 +515,7 @@ def test_a_hole_file_played_with_course_options_says_they_are_not_for_it(extra, 
 def test_names_on_the_command_line_that_read_as_something_else(content_copy, tmp_path, monkeypatch, capsys):
     """QA of the names: a broken hole named by its id says what is wrong with it; '²' is no hole
     number; a folder named like a scene does not hide it; a course's name may not hold ':' or '/'
-    (COURSE:HOLE and paths use them); a theme named ' sand' is Sand's; a hole whose library is broken
+    (COURSE:HOLE and paths use them); a theme named ' sand ' or 'SAND' is Sand's; a hole whose library is broken
     does not end `validate --prove` early."""
     from polygolf.engine.loading.paths import user_content_dir
 
@@ -521,7 +541,11 @@ def test_names_on_the_command_line_that_read_as_something_else(content_copy, tmp
     (themes / "dune.yaml").write_text((content_copy / "themes" / "sand.yaml").read_text().replace("name: Sand",
                                                                                                    "name: ' sand '"))
     assert main(["validate", str(themes / "dune.yaml")]) == 1
-    assert "theme name ' sand ' is taken by" in capsys.readouterr().err
+    assert "name: a name may not start or end with spaces, got ' sand '" in capsys.readouterr().err
+    (themes / "dune.yaml").write_text((content_copy / "themes" / "sand.yaml").read_text().replace("name: Sand",
+                                                                                                   "name: SAND"))
+    assert main(["validate", str(themes / "dune.yaml")]) == 1
+    assert "theme name 'SAND' is taken by" in capsys.readouterr().err
     (themes / "dune.yaml").unlink()
     library = tmp_path / "own"
     library.mkdir()

@@ -112,7 +112,8 @@ def load_courses(path: str | Path | None = None, library: TileLibrary | None = N
     the rest of the course plays; an unknown hole name is such an error too. Holes are files beside
     the courses file; the library is the one beside it too, else the shipped one. A course's id (its
     name in lower case, spaces as dashes) names its bests and replays, so it may not repeat one in
-    the file, one of `taken` (other content folders') or Random nine's."""
+    the file, one of `taken` (other content folders') or Random nine's: a name that breaks these rules
+    refuses the whole file, with every such problem and every unknown hole name of it."""
     path = Path(path or HOLES_DIR / "courses.yaml")
     library = library or library_beside(path)
     data, lines = load_yaml(path)
@@ -120,18 +121,18 @@ def load_courses(path: str | Path | None = None, library: TileLibrary | None = N
     courses = []
     seen = {RANDOM_NINE_ID: "Random nine", **{taken_id: "a course of another content folder" for taken_id in taken}}
     read: dict[str, Hole | ContentError] = {}  # each hole file once, however many times the courses list it
+    named: list[ContentError] = []  # the names that break the rules
     for c, course in enumerate(spec.courses):
         loaded = Course(id=course.name.lower().replace(" ", "-"), name=course.name)
+        loc = ("courses", c, "name")
         if any(mark in course.name for mark in ":/\\"):
-            loc = ("courses", c, "name")
-            raise ContentError(path, line_of(loc, lines), format_loc(loc),
-                               "a course's name may not hold ':', '/' or '\\' (COURSE:HOLE and file paths use them)")
-        if loaded.id in seen:
-            loc = ("courses", c, "name")
-            raise ContentError(path, line_of(loc, lines), format_loc(loc),
-                               f"course id {loaded.id!r} (from its name) is taken by {seen[loaded.id]}: give the "
-                               "course another name")
-        seen[loaded.id] = f"courses[{c}] {course.name!r}"
+            named.append(ContentError(path, line_of(loc, lines), format_loc(loc), "a course's name may not hold ':', "
+                                      "'/' or '\\' (COURSE:HOLE and file paths use them)"))
+        elif loaded.id in seen:
+            named.append(ContentError(path, line_of(loc, lines), format_loc(loc), f"course id {loaded.id!r} (from its "
+                                      f"name) is taken by {seen[loaded.id]}: give the course another name"))
+        else:
+            seen[loaded.id] = f"courses[{c}] {course.name!r}"
         for h, hole_id in enumerate(course.holes):
             hole_path = path.parent / f"{hole_id}.yaml"
             if not hole_path.exists():
@@ -146,6 +147,9 @@ def load_courses(path: str | Path | None = None, library: TileLibrary | None = N
                     read[hole_id] = exc
             loaded.holes.append(read[hole_id])
         courses.append(loaded)
+    if named:
+        raise ContentError.of(named + [hole for course in courses for hole in course.holes
+                                       if isinstance(hole, ContentError) and hole.file == str(path)])
     return courses
 
 

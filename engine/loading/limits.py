@@ -69,7 +69,8 @@ LIMITS: list[tuple[str, str]] = [
     ("bodies, walls in a scene", f"1 – {MAX_BODIES:,}, ≤ {MAX_WALLS:,}"),
     ("bodies starting within reach of each other", f"≤ {MAX_START_PAIRS} pairs a body (bounding circles "
                                                    "overlapping: a pile touches, a heap in one spot is refused)"),
-    ("names", f"1 – {MAX_NAME} characters, no control characters (one line on the HUD, the scorecard and in messages)"),
+    ("names", f"1 – {MAX_NAME} characters, no control characters or direction overrides, no spaces before or after, "
+              "something that shows (one line on the HUD, the scorecard and in messages)"),
     ("tile size", f"{MIN_TILE:g} – {MAX_TILE:g} m; wall thickness, ball and cup radius ≤ a quarter of it"),
     ("tile positions `at`", f"|column|, |row| ≤ {MAX_TILE_INDEX}; ≤ {MAX_TILES} tiles a hole"),
     ("pattern items; border sets, patterns, courses, holes a course", f"≤ {MAX_ITEMS}; ≤ {MAX_ENTRIES}"),
@@ -106,12 +107,20 @@ Rate = finite(0.0, MAX_DRAG)
 Acceleration = finite(-MAX_GRAVITY, MAX_GRAVITY)
 
 
+_BIDI = {*range(0x202A, 0x202F), *range(0x2066, 0x206A), 0x200E, 0x200F, 0x061C}  # direction overrides, marks
+
+
 def _one_line(name: str) -> str:
-    """A name is shown on one line (HUD, scorecard, console, error messages): a control character
-    would break it."""
-    bad = next((c for c in name if unicodedata.category(c) in ("Cc", "Zl", "Zp")), None)
+    """A name is shown on one line (HUD, scorecard, console, error messages) and found by what it
+    shows: a control character would break the line, a direction override reorder what follows it,
+    spaces about it or nothing visible in it make a name that looks like another or like none."""
+    bad = next((c for c in name if unicodedata.category(c) in ("Cc", "Zl", "Zp") or ord(c) in _BIDI), None)
     if bad is not None:
         raise ValueError(f"a name may not hold control characters, got U+{ord(bad):04X}")
+    if name != name.strip():
+        raise ValueError(f"a name may not start or end with spaces, got {name!r}")
+    if not any(unicodedata.category(c)[0] in "LNPS" for c in name):
+        raise ValueError("a name needs a letter, digit or sign that shows")
     return name
 
 

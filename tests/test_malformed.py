@@ -186,9 +186,14 @@ CASES = [
      "digit or sign that shows"),
     ("scene-name-override", "scene", _sub(SCENE, "name: ball", 'name: "\\u202eball"'), 3, "bodies[0].name",
      "U+202E"),
+    ("scene-vertices-huge", "scene", _sub(SCENE, "shape: {regular: 4, radius: 0.5}",
+                                          "shape: {vertices: [[0, 0], [90000, 0], [0, 90000]]}"),
+     4, "bodies[0].shape", "at most 50 m"),
     ("scene-heap", "scene", "name: heap\nbodies:\n" + "".join(f"  - {{name: b{k}, shape: {{regular: 3, radius: 1}}, "
                                                           "position: [0, 0]}\n" for k in range(20)),
      1, "(top level)", "190 pairs of bodies start within reach of each other"),
+    ("scene-form-feed", "scene", _sub(SCENE, "bodies:\n", "# a\x0cb\nbodies:\n"), 2, "(file)", "U+000C"),
+    ("scene-line-separator", "scene", _sub(SCENE, "bodies:\n", "# a\u2028b\nbodies:\n"), 2, "(file)", "U+2028"),
     ("scene-binary", "scene", bytes(range(256)) * 4, None, "(file)", "not UTF-8"),
     ("scene-too-big", "scene", SCENE + "# " + "x" * (1 << 20) + "\n", 0, "(file)", "at most 1024 KiB"),
 ]

@@ -63,6 +63,16 @@ def test_normalise_makes_ccw_and_centres_on_the_centroid():
     assert polygon.centroid(verts) == pytest.approx((0.0, 0.0), abs=1e-12)
 
 
+@pytest.mark.parametrize("far", [0.0, 1000.0, 100_000.0])
+def test_zero_area_is_judged_at_the_polygons_own_size_wherever_it_lies(far):
+    """A half-square-metre triangle is one 100 km out too (it was refused as "zero area" there);
+    a flat one is refused everywhere."""
+    verts, centre = polygon.normalise([(far, far), (far - 1.0, far), (far, far - 1.0)])
+    assert polygon.signed_area(verts) == pytest.approx(0.5, rel=1e-6) and centre == pytest.approx((far - 1 / 3,) * 2)
+    with pytest.raises(PolygonError, match="zero area"):
+        polygon.normalise([(far, far), (far + 1.0, far + 1.0), (far + 2.0, far + 2.0)])
+
+
 def test_normalise_drops_collinear_vertices():
     verts, _ = polygon.normalise([(0, 0), (1, 0), (2, 0), (2, 2), (0, 2)])
     assert len(verts) == 4

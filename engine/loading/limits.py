@@ -53,6 +53,7 @@ LIMITS: list[tuple[str, str]] = [
     ("every number", "finite (no .inf, .nan)"),
     ("coordinates: positions, vertices, box centres", f"|x|, |y| ≤ {MAX_COORDINATE:,.0f} m"),
     ("shape radius (regular, star, random)", f"{MIN_RADIUS} – {MAX_RADIUS:g} m"),
+    ("a `vertices` shape's reach from its centroid", f"≤ {MAX_RADIUS:g} m"),
     ("wall box half-extents", f"0 < half ≤ {MAX_HALF:,.0f} m"),
     ("vertices: regular and random shapes, `vertices` bodies", f"{MIN_SIDES} – {MAX_SIDES}"),
     ("vertices: wall and pattern polygons", f"3 – {MAX_WALL_VERTICES}"),

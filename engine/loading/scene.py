@@ -19,6 +19,7 @@ from polygolf.engine.assembly.spec import DynamicPart, WallPart, WorldSpec
 from polygolf.engine.components import Drag, Material
 from polygolf.engine.loading.limits import (
     MAX_BODIES,
+    MAX_RADIUS,
     MAX_STAR_POINTS,
     MAX_WALL_VERTICES,
     MAX_WALLS,
@@ -75,7 +76,10 @@ class ShapeSpec(Strict_):
                 raise ValueError("radius does not apply to a vertices shape")
         elif self.radius is None:
             raise ValueError(f"a {kinds[0]} shape needs a radius")
-        self.outline()  # raises PolygonError (a ValueError) with the reason
+        outline = self.outline()  # raises PolygonError (a ValueError) with the reason
+        if kinds[0] == "vertices" and polygon.bounding_radius(outline) > MAX_RADIUS:
+            raise ValueError(f"a body reaches {polygon.bounding_radius(outline):,.4g} m from its centroid: at most "
+                             f"{MAX_RADIUS:g} m, as a radius")
         return self
 
     def outline(self) -> polygon.Outline:

@@ -194,9 +194,12 @@ def read_text(path: str | Path) -> str:
     except UnicodeDecodeError as exc:
         line = data[:exc.start].count(b"\n") + 1
         raise ContentError(file, line, "(file)", f"not UTF-8 text (byte 0x{data[exc.start]:02x})") from None
-    for number, line_text in enumerate(text.splitlines(), 1):
+    # Lines as an editor counts them (str.splitlines would also break at a form feed, a separator or
+    # U+2028, hiding them from the check and moving the numbers); U+2028 and U+2029 are refused too:
+    # YAML breaks lines there, so every line number after one would differ from the editor's.
+    for number, line_text in enumerate(re.split(r"\r\n|\r|\n", text), 1):
         bad = next((c for c in line_text if (ord(c) < 32 and c != "\t") or 0x7F <= ord(c) < 0xA0
-                    or c in "\ufffe\uffff"), None)
+                    or c in "\ufffe\uffff\u2028\u2029"), None)
         if bad is not None:
             raise ContentError(file, number, "(file)", f"control character U+{ord(bad):04X} in the text")
     return text

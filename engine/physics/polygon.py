@@ -190,8 +190,12 @@ def normalise(vertices: Sequence[Sequence[float]]) -> tuple[Outline, Vec]:
     if len(set(pts)) != len(pts):
         raise PolygonError("polygon has repeated vertices")
     scale = max(max(abs(x), abs(y)) for x, y in pts) or 1.0
-    area = signed_area(pts)
-    if abs(area) <= _AREA_EPS * scale * scale:
+    # Zero area for its own size, worked out about its first vertex: a half-square-metre triangle
+    # 100 km out is a triangle (measured against its distance from the origin, it had "zero area").
+    ox, oy = pts[0]
+    area = signed_area([(x - ox, y - oy) for x, y in pts])
+    extent = max(max(x for x, _ in pts) - min(x for x, _ in pts), max(y for _, y in pts) - min(y for _, y in pts))
+    if abs(area) <= _AREA_EPS * extent * extent:
         raise PolygonError("polygon has zero area")
     if not is_simple(pts):
         raise PolygonError("polygon edges cross each other (it must be simple)")

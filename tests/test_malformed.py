@@ -192,6 +192,9 @@ CASES = [
     ("scene-heap", "scene", "name: heap\nbodies:\n" + "".join(f"  - {{name: b{k}, shape: {{regular: 3, radius: 1}}, "
                                                           "position: [0, 0]}\n" for k in range(20)),
      1, "(top level)", "190 pairs of bodies start within reach of each other"),
+    ("scene-hole-missing", "scene", _sub(SCENE, "bodies:\n", "hole: meadow:99\nbodies:\n"), 2, "hole", "holes 1 to 9"),
+    ("scene-hole-path", "scene", _sub(SCENE, "bodies:\n", "hole: ../../etc/passwd\nbodies:\n"), 2, "hole",
+     "not a hole file beside the scene"),
     ("scene-form-feed", "scene", _sub(SCENE, "bodies:\n", "# a\x0cb\nbodies:\n"), 2, "(file)", "U+000C"),
     ("scene-line-separator", "scene", _sub(SCENE, "bodies:\n", "# a\u2028b\nbodies:\n"), 2, "(file)", "U+2028"),
     ("scene-binary", "scene", bytes(range(256)) * 4, None, "(file)", "not UTF-8"),

@@ -64,12 +64,18 @@ def build_scene_file(path: str | Path, knobs: Knobs | str | None = None) -> Simu
     """A scene file as a simulation, on its hole if it names one."""
     path = Path(path)
     scene = load_scene(path)
+    hole = scene_hole(scene, path)
+    return assemble(scene_spec(scene) if hole is None else scene_on_hole(scene, hole), knobs)
+
+
+def scene_hole(scene: Scene, path: Path) -> Hole | None:
+    """The hole the scene file at `path` names (None if it names none); a ContentError at its `hole`
+    line if there is no such hole or the hole is broken (`validate` asks the same)."""
     if scene.hole is None:
-        return assemble(scene_spec(scene), knobs)
+        return None
     try:
-        hole = find_hole(scene.hole, path.parent)
+        return find_hole(scene.hole, path.parent)
     except (KeyError, ContentError) as exc:
         _, lines = load_yaml(path)
         message = str(exc) if isinstance(exc, ContentError) else exc.args[0]
         raise ContentError(path, line_of(("hole",), lines), "hole", message) from None
-    return assemble(scene_on_hole(scene, hole), knobs)

@@ -7,6 +7,7 @@ from collections.abc import Iterable
 from pathlib import Path
 
 from polygolf.engine.golf.holes import Hole, load_courses, load_hole_file
+from polygolf.engine.golf.scenes import scene_hole
 from polygolf.engine.loading.course import load_library
 from polygolf.engine.loading.paths import content_roots
 from polygolf.engine.loading.scene import load_scene
@@ -27,7 +28,7 @@ def check_file(path: Path) -> list[ContentError]:
         elif kind == "hole":
             return _unreachable(path, load_hole_file(path))
         elif kind == "scene":
-            load_scene(path)
+            scene_hole(load_scene(path), path)
         elif kind == "theme":
             check_name_free(load_theme(path), path, themes_before(path))
         else:

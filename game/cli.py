@@ -40,7 +40,10 @@ class Parser(argparse.ArgumentParser):
     """argparse that refuses a bad argument in one line (no usage block), exit status 2."""
 
     def error(self, message: str) -> NoReturn:
-        self.exit(EXIT_CONTENT, f"{self.prog}: {message}\n")
+        """`polygolf: --option: why`, as the README writes it (argparse says `argument --option: why`)."""
+        argument = re.fullmatch(r"argument ([^:]+): (.*)", message, re.DOTALL)
+        self.exit(EXIT_CONTENT, f"polygolf: {argument[1].split('/')[-1]}: {argument[2]}\n" if argument else
+                  f"{self.prog}: {message}\n")
 
 
 def seconds_arg(text: str) -> float:

@@ -459,6 +459,11 @@ def test_every_problem_of_a_courses_file_is_reported_at_once(content_copy, capsy
     err = capsys.readouterr().err.strip().splitlines()
     assert [line.split(": ")[1] for line in err] == ["courses[0].name", "courses[1].name", "courses[1].holes[1]"], err
     assert "taken by Random nine" in err[0] and "may not hold ':'" in err[1] and "no hole file missing.yaml" in err[2]
+    (mine / "loop.yaml").symlink_to(mine / "loop.yaml")  # there, but it cannot be read: says why, not "no file"
+    (mine / "courses.yaml").write_text("courses:\n  - name: Mine\n    holes: [good, loop]\n")
+    assert main(["validate", str(mine / "courses.yaml")]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and f"{mine / 'loop.yaml'}:0: (file): " in err[0] and "no hole file" not in err[0], err
 
 
 def test_a_theme_may_not_take_another_themes_name(content_copy, capsys):

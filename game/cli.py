@@ -157,7 +157,7 @@ def _simulate(args: argparse.Namespace) -> int:
 
     frames = round(args.seconds * 60)
     path = named_file(args.scene, "scenes")
-    if not path.exists() and path == Path(args.scene) and len(path.parts) == 1 and not path.suffix:
+    if not path.exists() and len(path.parts) == 1 and not path.suffix:  # (a bare name that named no scene)
         raise KeyError(f"no scene {args.scene!r}: give a scene file, or one of {', '.join(content_names('scenes'))}")
     with build_scene_file(path, args.preset) as sim:
         startup.prepare_physics()

@@ -210,7 +210,7 @@ class Scene(Strict_):
     def _vertex_budget_first(cls, data: Any) -> Any:
         """The vertex budget from the file's own counts, before any outline is built and checked: a
         file of 2 000 stars of 128 points each took 70 s to check one by one before it was refused.
-        (Malformed entries are left to the fields' own checks; `_vertex_budget` counts again.)"""
+        (Malformed entries are left to the fields' own checks; `_budgets` counts again.)"""
         if isinstance(data, dict):
             check_vertex_budget(sum(_raw_vertices((body or {}).get("shape") if isinstance(body, dict) else None)
                                     for body in _raw_list(data.get("bodies")))
@@ -218,15 +218,13 @@ class Scene(Strict_):
         return data
 
     @model_validator(mode="after")
-    def _vertex_budget(self) -> Scene:
-        check_vertex_budget(sum(len(b.shape.outline()) for b in self.bodies) + sum(w.vertex_count for w in self.walls))
-        return self
-
-    @model_validator(mode="after")
-    def _room_to_start(self) -> Scene:
+    def _budgets(self) -> Scene:
+        """The vertex budget, then room to start (each body's outline built once for both)."""
+        outlines = [b.shape.outline() for b in self.bodies]
+        check_vertex_budget(sum(len(o) for o in outlines) + sum(w.vertex_count for w in self.walls))
         if self.collide_bodies:
             check_start_pairs(np.array([b.position for b in self.bodies], dtype=np.float64).reshape(-1, 2),
-                              np.array([polygon.bounding_radius(b.shape.outline()) for b in self.bodies]))
+                              np.array([polygon.bounding_radius(o) for o in outlines]))
         return self
 
     @model_validator(mode="after")

@@ -278,7 +278,7 @@ def validate(model: type[M], data: Any, lines: dict[Loc, int], file: str | Path)
     """Validate `data` into `model`; every pydantic error becomes a line of the ContentError. Where a
     union's branches disagree, the deepest explanation wins ("n: should be 'open' or 'wall'" over
     "should be a string")."""
-    if not isinstance(data, dict) and "properties" in model.model_json_schema():  # the file is not a mapping
+    if not isinstance(data, dict) and model.model_fields:  # the file is not a mapping of the model's keys
         what = _KINDS.get(type(data), f"a {type(data).__name__}")
         keys = ", ".join(name for name, info in model.model_fields.items() if info.is_required())
         raise ContentError(file, line_of((), lines), "(top level)",

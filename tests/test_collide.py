@@ -78,7 +78,8 @@ def test_time_of_impact_s_quick_answers_are_the_advancement_s_own():
     than the motion can close: each answer must be the one the advancement alone gives, for a
     hexagon and a star's pieces moving and turning about a slanted and a square wall piece, for
     continuous collision's target and the gap test's (and both kinds of answer must come up)."""
-    from polygolf.engine.physics.toi import _NOWHERE, NO_HIT, _advance, wall_out_of_reach
+    from polygolf.engine.physics.settings import GAP_TOLERANCE
+    from polygolf.engine.physics.toi import _NOWHERE, NO_HIT, _advance, stays_clear, wall_out_of_reach
 
     rng = np.random.default_rng(5)
     walls = [box(1.5, 0.1), [(0.4, 0.3), (1.8, 0.3), (0.4, 1.6)]]
@@ -86,7 +87,7 @@ def test_time_of_impact_s_quick_answers_are_the_advancement_s_own():
     pieces = [polygon.regular_polygon(6, 0.3), *polygon.convex_pieces(polygon.star_polygon(5, 2, 0.35))]
     body = ConvexSet.of(pieces, [polygon.edge_normals(p) for p in pieces])
     work = toi_work(6)
-    quick, advanced, hits = 0, 0, 0
+    quick, advanced, hits, let_go = 0, 0, 0, 0
     for _ in range(3000):
         i, g = int(rng.integers(len(pieces))), int(rng.integers(len(walls)))
         s, e, ws, we = body.first[i], body.first[i + 1], wall.first[g], wall.first[g + 1]
@@ -100,11 +101,52 @@ def test_time_of_impact_s_quick_answers_are_the_advancement_s_own():
             alone = _advance(body.verts, body.normals, s, e, start, end, wall.verts, wall.normals, ws, we, _NOWHERE,
                              _NOWHERE, True, rates, abs(end[2] - start[2]) * body.reach[i], target, tolerance,
                              allowance, rates, False, work)
+            # (The sweep's stop short of the wall stands only where the piece would go on to touch it.)
+            if alone < 1.0 and target > 0.0 and stays_clear(body.verts, s, e, start, end, wall.verts, wall.normals,
+                                                              ws, we, np.zeros(3), -GAP_TOLERANCE):
+                alone, let_go = NO_HIT, let_go + 1
             assert got == alone
             quick += got == NO_HIT
             hits += got < 1.0
             advanced += 1
-    assert quick > 500 and hits > 100  # both answers, many times
+    assert quick > 500 and hits > 100 and let_go > 0  # every answer (let go: 3 of the 6 000)
+
+
+def test_stays_clear_is_the_least_distance_beyond_a_wall_face_over_the_whole_motion():
+    """`toi.stays_clear` (exact: the bottom of each vertex's circle) against the motion sampled at
+    20 001 poses: for a hexagon and a star's pieces moving and turning (up to two turns a substep)
+    about a slanted and a square wall piece, it says clear where some face keeps every sampled vertex
+    more than the clearance (and a sampling step's travel) beyond it, and not clear where none does."""
+    from polygolf.engine.physics.toi import stays_clear
+
+    rng = np.random.default_rng(11)
+    walls = [box(1.5, 0.1), [(0.4, 0.3), (1.8, 0.3), (0.4, 1.6)]]
+    wall = ConvexSet.of(walls, [polygon.edge_normals(w) for w in walls])
+    pieces = [polygon.regular_polygon(6, 0.3), *polygon.convex_pieces(polygon.star_polygon(5, 2, 0.35))]
+    body = ConvexSet.of(pieces, [polygon.edge_normals(p) for p in pieces])
+    ts = np.linspace(0.0, 1.0, 20001)
+    clearance, said = 0.01, {True: 0, False: 0}
+    for _ in range(300):
+        i, g = int(rng.integers(len(pieces))), int(rng.integers(len(walls)))
+        s, e, ws, we = body.first[i], body.first[i + 1], wall.first[g], wall.first[g + 1]
+        start = np.array([rng.uniform(-1.0, 2.5), rng.uniform(0.2, 1.2), rng.uniform(-3.2, 3.2)])
+        end = start + np.array([*rng.normal(0.0, 0.3, 2), rng.normal(0.0, 4.0)])
+        poses = start + ts[:, None] * (end - start)  # (sample, x y angle)
+        c, sn = np.cos(poses[:, 2:]), np.sin(poses[:, 2:])
+        lx, ly = body.verts[s:e, 0], body.verts[s:e, 1]
+        x, y = poses[:, :1] + c * lx - sn * ly, poses[:, 1:2] + sn * lx + c * ly  # (sample, vertex)
+        wx, wy = wall.verts[ws:we, 0], wall.verts[ws:we, 1]
+        nx, ny = wall.normals[ws:we, 0], wall.normals[ws:we, 1]
+        # Each face's least sampled separation of the piece.
+        lowest = ((x[:, :, None] - wx) * nx + (y[:, :, None] - wy) * ny).min(axis=(0, 1))
+        between = (np.hypot(*(end[:2] - start[:2])) + abs(end[2] - start[2]) * body.reach[i]) / (len(ts) - 1)
+        clear = stays_clear(body.verts, s, e, start, end, wall.verts, wall.normals, ws, we, np.zeros(3), clearance)
+        if lowest.max() > clearance + between:
+            assert clear
+        if lowest.max() <= clearance:
+            assert not clear
+        said[clear] += 1
+    assert said[True] > 30 and said[False] > 30
 
 
 def test_wall_pieces_a_body_stays_clear_of_are_passed_over_with_the_same_rows():

@@ -47,10 +47,12 @@ def test_a_run_is_its_processors_one_by_one(scene, preset):
     with scene_sim(scene, preset) as whole, scene_sim(scene, preset) as alone, scene_sim(scene, preset) as timed:
         before, _, after = whole._parts  # a scene's stages are all compiled: one call a frame
         assert before == after == []
+        touched = False  # (whether a frame ended with contacts to compare: a slide, a resting stack)
         for _ in range(40):
             whole.step(3)
             step_alone(alone, 3)
             timed.step(3, profile=True)
+            touched |= len(whole.res.contacts.table) > 0
             for other in (alone, timed):
                 assert np.array_equal(whole.res.bodies.state, other.res.bodies.state)
                 _same_tables(whole.res.contacts.table, other.res.contacts.table)
@@ -58,7 +60,7 @@ def test_a_run_is_its_processors_one_by_one(scene, preset):
                 assert whole.metrics.max_energy_rise == other.metrics.max_energy_rise
                 assert whole.metrics.max_penetration == other.metrics.max_penetration
         assert set(timed.metrics.system_seconds) == set(timed.system_names)
-        assert whole.res.stats.bounces > 0 or whole.res.stats.toi_hits > 0 or scene == "stack-drop"
+        assert touched or whole.res.stats.bounces > 0 or whole.res.stats.toi_hits > 0
 
 
 def test_a_crowd_whose_kept_pairs_outgrow_their_room_is_held_again():

@@ -282,8 +282,54 @@ def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float,
     if beyond:
         return NO_HIT
     # The piece's own faces turn with it: the advancement gives them their rates as they point.
-    return _advance(lv, ln, s, e, start, end, wv, wn, ws, we, _NOWHERE, _NOWHERE, True, rates, turn, target,
-                    tolerance, allowance, rates, False, work)
+    t = _advance(lv, ln, s, e, start, end, wv, wn, ws, we, _NOWHERE, _NOWHERE, True, rates, turn, target, tolerance,
+                 allowance, rates, False, work)
+    # A sweep stops a piece short of the wall only if it would go on to sink into it (deeper than the
+    # gap test's tolerance, beyond every face): a tip swinging past a rail within the target, and a
+    # ball sliding level onto the next of two flush boxes, are let go (the advancement's bound for a
+    # turn is the same at every point of the piece, and it knows no seams; `stays_clear` is exact).
+    if t < 1.0 and target > 0.0 and stays_clear(lv, s, e, start, end, wv, wn, ws, we, _NOWHERE, -GAP_TOLERANCE):
+        return NO_HIT
+    return t
+
+
+@inlined_leaf
+def stays_clear(lv: np.ndarray, s: int, e: int, start: np.ndarray, end: np.ndarray, wv: np.ndarray, wn: np.ndarray,
+                ws: int, we: int, at: np.ndarray, clearance: float) -> bool:
+    """Whether the piece (rows s..e, body frame), moving start -> end (x, y, angle, each linear in
+    t), stays more than `clearance` beyond one face of the still piece (rows ws..we, posed `at`: a
+    wall's at `_NOWHERE`, its rows being the world's) all the way: then it never comes that near it
+    (a negative clearance: never sinks deeper than that into it, along that face).
+
+    Exact, not a bound: along a fixed face normal n, a vertex at distance r and polar angle phi
+    from the body's origin lies at f(t) = a + b t + r cos(psi0 + w t) (a, b: the origin's start
+    and step along n; w: the turn; psi0 = angle + phi - angle(n)), whose least value on [0, 1] is
+    at an end or where f' = b - r w sin(psi) = 0 with cos(psi) < 0
+    (the bottom of the vertex's circle, a turn apart from the next)."""
+    dx, dy, turn = end[0] - start[0], end[1] - start[1], end[2] - start[2]
+    c, sn = math.cos(at[2]), math.sin(at[2])  # (1 and 0 for a wall: its rows as they are)
+    for k in range(ws, we):
+        nx, ny = c * wn[k, 0] - sn * wn[k, 1], sn * wn[k, 0] + c * wn[k, 1]
+        wx, wy = at[0] + c * wv[k, 0] - sn * wv[k, 1], at[1] + sn * wv[k, 0] + c * wv[k, 1]
+        a = (start[0] - wx) * nx + (start[1] - wy) * ny
+        b = dx * nx + dy * ny
+        facing = math.atan2(ny, nx)
+        lowest = math.inf
+        for j in range(s, e):
+            r = math.hypot(lv[j, 0], lv[j, 1])
+            psi0 = start[2] + math.atan2(lv[j, 1], lv[j, 0]) - facing
+            low = min(a + r * math.cos(psi0), a + b + r * math.cos(psi0 + turn))
+            if r > 0.0 and turn != 0.0 and abs(b) <= abs(r * turn):
+                bottom = math.pi - math.asin(b / (r * turn))  # a psi where f' = 0, cos(psi) <= 0
+                lo, hi = min(psi0, psi0 + turn), max(psi0, psi0 + turn)
+                psi = bottom + 2.0 * math.pi * math.ceil((lo - bottom) / (2.0 * math.pi))
+                while psi <= hi:
+                    low = min(low, a + b * ((psi - psi0) / turn) + r * math.cos(psi))
+                    psi += 2.0 * math.pi
+            lowest = min(lowest, low)
+        if lowest > clearance:
+            return True
+    return False
 
 
 @leaf_kernel
@@ -301,8 +347,23 @@ def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reac
     if end_a[0] - start_a[0] - end_b[0] + start_b[0] == 0.0 and end_a[1] - start_a[1] - end_b[1] + start_b[1] == 0.0 \
             and turns == 0.0:
         return NO_HIT
-    return _advance(lva, lna, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b, end_b, False, work[2], turns, target,
-                    tolerance, allowance, at_start, measured, work, posed_at_start)
+    t = _advance(lva, lna, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b, end_b, False, work[2], turns, target,
+                 tolerance, allowance, at_start, measured, work, posed_at_start)
+    # As against a wall (`time_of_impact`), where one of the two stands still: a ball passing another
+    # player's resting ball without sinking into it is not put back.
+    if t < 1.0 and target > 0.0:
+        if _still(start_b, end_b) and stays_clear(lva, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b,
+                                                  -GAP_TOLERANCE):
+            return NO_HIT
+        if _still(start_a, end_a) and stays_clear(lvb, sb, eb, start_b, end_b, lva, lna, sa, ea, start_a,
+                                                  -GAP_TOLERANCE):
+            return NO_HIT
+    return t
+
+
+@inlined_leaf
+def _still(start: np.ndarray, end: np.ndarray) -> bool:
+    return start[0] == end[0] and start[1] == end[1] and start[2] == end[2]
 
 
 @inlined_leaf

@@ -27,7 +27,7 @@ from typing import NoReturn
 from polygolf import __version__
 from polygolf.engine.golf.search import EFFORTS
 from polygolf.engine.loading.limits import MAX_SECONDS
-from polygolf.engine.loading.paths import content_names, content_roots, misplaced_folders, named_file
+from polygolf.engine.loading.paths import CONTENT_DIR, content_names, content_roots, misplaced_folders, named_file
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.engine.physics.presets import PRESETS
 from polygolf.game import startup
@@ -453,6 +453,9 @@ def _scores(args: argparse.Namespace) -> int:
                            "name": b.name, "shape": b.shape, "strokes": b.strokes, "par": b.par, "player": b.player,
                            "when": b.when} for b in bests]))
         return 0
+    if not bests and store.warnings:  # (the database could not be read: its warning says why)
+        print("no rounds could be read" + (f" on {args.course}" if args.course else ""))
+        return 1
     if not bests:
         print("no rounds saved yet" + (f" on {args.course}" if args.course else ""))
         return 0
@@ -680,6 +683,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     run = getattr(args, "run", _menu)
+    if os.environ.get("POLYGOLF_CONTENT") and not (CONTENT_DIR / "holes").is_dir():
+        print(f"polygolf: POLYGOLF_CONTENT: {CONTENT_DIR} is not a content folder (no holes/ in it)", file=sys.stderr)
+        return EXIT_CONTENT
     try:
         return run(args)
     except ContentError as exc:

@@ -22,6 +22,16 @@ def run(*args, env_changes=None, drop=("DISPLAY", "WAYLAND_DISPLAY", "ARCADE_HEA
                           timeout=120)
 
 
+def test_a_content_override_that_is_no_content_folder_is_said_in_one_line(tmp_path):
+    """POLYGOLF_CONTENT naming a missing folder, or one without holes/, was taken as an empty content
+    folder: "no course 'meadow'; courses: " (an empty list) and the like."""
+    for folder in (tmp_path / "missing", tmp_path):
+        for args in (["scores"], ["validate"], ["play", "--course", "meadow"]):
+            result = run(*args, env_changes={"POLYGOLF_CONTENT": str(folder)})
+            assert result.returncode == 2 and result.stdout == ""
+            assert result.stderr == f"polygolf: POLYGOLF_CONTENT: {folder} is not a content folder (no holes/ in it)\n"
+
+
 def test_window_commands_without_a_display_say_so_in_one_line():
     for args in ([], ["play", "--course", "meadow", "--hole", "2"]):
         result = run(*args)

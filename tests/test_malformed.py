@@ -428,15 +428,32 @@ def test_a_file_where_the_players_content_folder_belongs_is_said_not_passed_over
     assert main(["validate"]) == 1
 
 
+@pytest.mark.parametrize(("key", "shown"), [
+    ("a\nb: c", "'a\\nb: c'"), ("abc\rXYZ", "'abc\\rXYZ'"), ("\x1b[31mRED\x1b[0m", "'\\x1b[31mRED\\x1b[0m'"),
+    ("\u202egnp.exe", "'\\u202egnp.exe'"), (" padded", "' padded'"), ("k" * 400_000, "'" + "k" * 40 + "'...")],
+    ids=["line-break", "carriage-return", "escape-code", "bidi-override", "padded", "400-kb"])
+def test_an_unknown_key_is_named_in_one_short_line_with_its_escapes(tmp_path, capsys, key, shown):
+    """Whatever an unknown key holds (a line break, a carriage return, a terminal's escape code, a
+    direction override, 400 KB), the error stays one line naming it with its escapes, cut short.
+    (It was printed as written: a line break split the "one-line" error; an escape code coloured the
+    terminal.)"""
+    path = tmp_path / "case.yaml"
+    path.write_text(HOLE + f"? {json.dumps(key)}\n: 1\n")  # (an explicit key: YAML's plain ones stop at 1 024)
+    assert main(["validate", str(path)]) == 1
+    err = capsys.readouterr().err
+    assert err == f"{path}:6: {shown}: unknown key\n"
+
+
 def test_a_course_may_not_take_another_courses_id(content_copy, capsys):
     """A course's id names its bests and replays: the player's own content may not reuse the shipped
-    content's, one file may not name two courses alike, and none may be Random nine."""
+    content's, one file may not name two courses alike, and none may be Random nine or a seed's nine."""
     from polygolf.engine.loading.paths import user_content_dir
 
     mine = user_content_dir() / "holes"
     mine.mkdir(parents=True)
     (mine / "my-hole.yaml").write_text("name: Mine\npar: 2\ntiles:\n  - {at: [0, 0]}\n  - {at: [1, 0]}\n")
     for courses, line, taken in (("Meadow", 2, "another content folder"), ("Random Nine", 2, "Random nine"),
+                                 ("Random Nine 7", 2, "Random nine's seeds"),  # (seed 7's nine: random-nine-7)
                                  ("Mine\n    holes: [my-hole]\n  - name: mine", 4, "courses[0] 'Mine'")):
         (mine / "courses.yaml").write_text(f"courses:\n  - name: {courses}\n    holes: [my-hole]\n")
         assert main(["validate", str(mine / "courses.yaml")]) == 1
@@ -754,6 +771,48 @@ def test_a_hole_whose_cup_no_ball_can_reach_is_refused_by_validate(tmp_path, cap
     err = capsys.readouterr().err.strip().splitlines()
     assert err == [f"{tmp_path / 'shut.yaml'}:6: tiles[2]: the cup cannot be reached from the tee: walls, gates or "
                    "water close every way for a ball 0.9 m across"]
+
+
+@pytest.mark.parametrize(("radius", "problem"), [
+    (1.5, "2 players' balls (3 m across) do not fit apart on the green"),
+    (1.0, "with 3 players a ball (2 m across) starts beside the cup: no room near the tee")])
+def test_a_hole_whose_hot_seat_balls_cannot_start_apart_is_refused_by_validate(tmp_path, capsys, radius, problem):
+    """A library's ball too large for the tee's tile (its radius is within the tile's quarter): two
+    to four players' balls were put on top of each other, or beside (or in) the cup, and validate
+    said nothing. The start spots now keep off the cup while the green has room, and never overlap
+    while it has any; validate says which count of players cannot start."""
+    from polygolf.engine.golf.holes import load_hole_file
+    from polygolf.engine.golf.world import tee_spots
+
+    (tmp_path / "tiles.yaml").write_text(LIBRARY.replace("radius: 0.45 ", f"radius: {radius} ", 1))
+    (tmp_path / "big.yaml").write_text("name: Big Ball\npar: 3\ntiles:\n  - {at: [0, 0], borders: open-e}\n"
+                                       "  - {at: [1, 0], borders: open-w}\n")
+    assert main(["validate", str(tmp_path / "big.yaml")]) == 1
+    assert capsys.readouterr().err.strip().splitlines() == [f"{tmp_path / 'big.yaml'}:4: tiles[0]: {problem}"]
+    layout = load_hole_file(tmp_path / "big.yaml").layout
+    if radius == 1.0:  # (room for two, apart and off the cup)
+        first, second = tee_spots(layout, radius, 2)
+        assert math.dist(first, second) >= 2 * radius
+        assert min(math.dist(spot, layout.cup) for spot in (first, second)) >= layout.cup_radius + 3.5 * radius
+
+
+def test_a_hole_far_larger_than_its_green_is_validated_at_once(tmp_path, capsys):
+    """Two stray tiles 100 columns off, with the shipped tiles and with tiles 100 m across (both within
+    the limits): the route map validate builds covered the whole box at a 0.25 m step (two minutes and
+    2 GB; 48 GiB with the large tiles, a traceback). A map of a hole that large is coarser now."""
+    from polygolf.engine.golf.holes import load_hole_file
+    from polygolf.engine.golf.search import MAX_ROUTE_NODES, RouteMap
+
+    hole = ("name: Far Tiles\npar: 3\ntiles:\n  - {at: [0, 0], borders: open-e}\n  - {at: [100, 100]}\n"
+            "  - {at: [-100, -100]}\n  - {at: [1, 0], borders: open-w}\n")
+    (tmp_path / "far.yaml").write_text(hole)
+    (tmp_path / "large").mkdir()
+    (tmp_path / "large" / "far.yaml").write_text(hole)
+    (tmp_path / "large" / "tiles.yaml").write_text(LIBRARY.replace("tile_size: 6.0", "tile_size: 100.0", 1))
+    assert main(["validate", str(tmp_path / "far.yaml"), str(tmp_path / "large" / "far.yaml")]) == 0
+    capsys.readouterr()
+    route = RouteMap(load_hole_file(tmp_path / "far.yaml").layout, 0.45)
+    assert route.nx * route.ny <= MAX_ROUTE_NODES * 1.01 and route.step > 0.25
 
 
 def test_yaml_merge_keys_take_a_mappings_keys_where_none_is_written(tmp_path, capsys):

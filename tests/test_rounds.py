@@ -126,6 +126,24 @@ def test_turns_rotate_after_everything_rests_and_a_restart_costs_a_stroke(course
     session.close()
 
 
+def test_a_restart_in_the_frame_of_a_shot_withdraws_the_shot(courses):
+    """A shot released and the hole restarted before the next frame (R, or Pause -> Restart hole):
+    the ball stays on the tee (the shot was never taken from there), the restart's penalty counts
+    and the same player plays again. (The shot used to fire from the tee, and the next player was
+    skipped.)"""
+    course = find_course(courses, "sandbox")
+    session = RoundPlay(Round(course, players=["Ann", "Bob"]), PENTAGON, "Pentagon")
+    hole = session.hole
+    ann = hole.players[0]
+    assert session.shoot((ann.body.x, ann.body.y), (1.0, 0.2)) and session.restart()
+    for _ in range(30):
+        session.step()
+    assert (ann.body.x, ann.body.y) == ann.tee and ann.body.asleep
+    assert (ann.state.strokes, ann.state.penalties) == (0, 1)
+    assert session.turn == 0 and session.can_shoot
+    session.close()
+
+
 def test_scorecard_wording():
     assert strokes_text(1) == "1 stroke" and strokes_text(2) == "2 strokes"
     assert penalty_text(1) == "(+1 penalty stroke)" and penalty_text(3) == "(+3 penalty strokes)"
@@ -604,6 +622,15 @@ def test_scores_of_a_course_nobody_knows_says_so_and_of_a_known_one_without_roun
     for known in ("Meadow", "hazards", "Random nine · seed 12"):
         assert main(["scores", "--course", known]) == 0
         assert capsys.readouterr().out.strip() == f"no rounds saved yet on {known}"
+
+
+def test_scores_with_a_database_it_cannot_read_says_so(capsys):
+    """A folder where the database belongs (or a file it may not read): the store's warning, then
+    "no rounds could be read" and a failing exit, not "no rounds saved yet"."""
+    (data_dir() / "polygolf.db").mkdir(parents=True)
+    assert main(["scores"]) == 1
+    out = capsys.readouterr()
+    assert out.out.strip() == "no rounds could be read" and "polygolf.db" in out.err
 
 
 @pytest.mark.parametrize("where, players, shape", [(("hazards", 8), 4, "Square"), (("meadow", 7), 3, "Triangle")])

@@ -24,3 +24,7 @@ class ShotInput:
     def request(self, origin: tuple[float, float], vector: tuple[float, float]) -> None:
         self.origin, self.vector, self.pending = origin, vector, True
         ShotInput.requests += 1
+
+    def withdraw(self) -> None:
+        """Forget a shot not yet taken (a restart in the same frame: the ball is back on its tee)."""
+        self.pending = False

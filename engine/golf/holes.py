@@ -4,6 +4,7 @@ checked (reachable cup, clear tee and cup), and courses of such holes with broke
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Collection, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -128,9 +129,10 @@ def load_courses(path: str | Path | None = None, library: TileLibrary | None = N
         if any(mark in course.name for mark in ":/\\"):
             named.append(ContentError(path, line_of(loc, lines), format_loc(loc), "a course's name may not hold ':', "
                                       "'/' or '\\' (COURSE:HOLE and file paths use them)"))
-        elif loaded.id in seen:
+        elif loaded.id in seen or re.fullmatch(rf"{RANDOM_NINE_ID}-[0-9]+", loaded.id):  # (a seed's nine's id)
+            owner = seen.get(loaded.id, "Random nine's seeds")
             named.append(ContentError(path, line_of(loc, lines), format_loc(loc), f"course id {loaded.id!r} (from its "
-                                      f"name) is taken by {seen[loaded.id]}: give the course another name"))
+                                      f"name) is taken by {owner}: give the course another name"))
         else:
             seen[loaded.id] = f"courses[{c}] {course.name!r}"
         for h, hole_id in enumerate(course.holes):

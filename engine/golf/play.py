@@ -156,6 +156,7 @@ class HolePlay:
         player = self.players[self.turn]
         if player.state.finished:
             return False
+        player.shot.withdraw()  # a shot released this frame is not taken from the tee
         self.place_ball(*self._free_spot(player))
         player.body.angle = 0.0
         self.sim.res.events.emit("penalty", player.entity, RESTART_PENALTY)

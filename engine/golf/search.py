@@ -32,6 +32,7 @@ from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import MAX_SHOT_SPEED, SHOT_POWER
 
 ROUTE_STEP = 0.25  # m between the route map's nodes
+MAX_ROUTE_NODES = 250_000  # a larger hole's route map is coarser (its search, Python's, some seconds)
 STROKE = 4.0  # m of route: what one more stroke weighs when two shots are compared
 SHOT_SECONDS = 12.0  # a shot still rolling after this long (stuck on a windmill, say) counts as a bad one
 PROOF_SHAPES = (ShapeSpec(regular=6, radius=1.0), ShapeSpec(regular=3, radius=1.0), ShapeSpec(star=(5, 2), radius=1.0))
@@ -66,6 +67,8 @@ class RouteMap:
 
     def __init__(self, layout: HoleLayout, ball_radius: float, step: float = ROUTE_STEP) -> None:
         x0, y0, x1, y1 = layout.bounds
+        # A hole too large for a grid of this step gets a coarser one (tiles far apart, or huge ones).
+        step = max(step, math.sqrt((x1 - x0) * (y1 - y0) / MAX_ROUTE_NODES))
         self.origin, self.step = (x0, y0), step
         self.nx, self.ny = int(math.ceil((x1 - x0) / step)), int(math.ceil((y1 - y0) / step))
         xs = x0 + (np.arange(self.nx) + 0.5) * step
@@ -74,11 +77,27 @@ class RouteMap:
         free = np.zeros(px.shape, dtype=bool)
         for fx0, fy0, fx1, fy1 in layout.floor:
             free |= (px >= fx0) & (px <= fx1) & (py >= fy0) & (py <= fy1)
-        free &= _clearance(px, py, layout.wall_outlines()) >= 0.6 * ball_radius
-        free &= _clearance(px, py, layout.zone_outlines("water")) >= 0.3 * ball_radius
+        free &= self._clear_of(xs, ys, layout.wall_outlines(), 0.6 * ball_radius)
+        free &= self._clear_of(xs, ys, layout.zone_outlines("water"), 0.3 * ball_radius)
         self.free = free
         self.points = np.stack([px, py], axis=1)
         self.distance = self._dijkstra(layout.cup)
+
+    def _clear_of(self, xs: np.ndarray, ys: np.ndarray, outlines: list, distance: float) -> np.ndarray:
+        """Which nodes lie `distance` or more from every outline (and outside it): each outline asked
+        only about the nodes of its box grown by `distance` (the rest are farther), not every node."""
+        clear = np.ones((self.ny, self.nx), dtype=bool)
+        (x0, y0), step = self.origin, self.step
+        for outline in outlines:
+            ox, oy = [x for x, _ in outline], [y for _, y in outline]
+            i0, i1 = (max(0, math.floor((min(ox) - distance - x0) / step - 1.0)),
+                      min(self.nx, math.ceil((max(ox) + distance - x0) / step + 1.0)))
+            j0, j1 = (max(0, math.floor((min(oy) - distance - y0) / step - 1.0)),
+                      min(self.ny, math.ceil((max(oy) + distance - y0) / step + 1.0)))
+            if i0 < i1 and j0 < j1:
+                bx, by = np.meshgrid(xs[i0:i1], ys[j0:j1], indexing="xy")
+                clear[j0:j1, i0:i1] &= _clearance(bx, by, [outline]) >= distance
+        return clear.ravel()
 
     def _node(self, x: float, y: float) -> tuple[int, int]:
         return int((x - self.origin[0]) / self.step), int((y - self.origin[1]) / self.step)

@@ -5,6 +5,7 @@ content has them)."""
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 
 from polygolf.engine.assembly.effects import effects_for
 from polygolf.engine.assembly.spec import DynamicPart, KinematicPart, WallPart, WorldSpec
@@ -60,11 +61,35 @@ def tee_spots(layout: HoleLayout, radius: float, players: int) -> list[tuple[flo
                            tee[1] + ring * step * 0.5 * math.sin(a * math.pi / 12))
                           for ring in range(1, 13) for a in range(24)]
     spots: list[tuple[float, float]] = []
+
+    def nearest_free(want: tuple[float, float], places: Iterable[tuple[float, float]],
+                     off_cup: float) -> tuple[float, float] | None:
+        """The place nearest `want` where a ball fits, clear of the balls placed and `off_cup` from the
+        cup's centre (the first in the list of those as near; each looked at only until one is found)."""
+        return next((c for c in sorted(places, key=lambda c: math.dist(c, want))
+                     if math.dist(c, layout.cup) >= off_cup and all(math.dist(c, s) >= step * 0.9 for s in spots)
+                     and ball_fits(layout, *c, radius * 1.1)), None)
+
+    away = layout.cup_radius + radius + step  # a step clear of the cup's rim
     for want in wanted:
-        free = [c for c in [want, *candidates] if ball_fits(layout, *c, radius * 1.1)
-                and all(math.dist(c, s) >= step * 0.9 for s in spots)]
-        spots.append(min(free, key=lambda c: math.dist(c, want)) if free else tee)
+        # Near the tee; else (a ball too big for the tee's tile) anywhere on the green, off the cup if
+        # it can be (`start_problem` says when it cannot); else on the tee.
+        spot = nearest_free(want, [want, *candidates], away) \
+            or nearest_free(want, drop_spots(layout, radius), away) \
+            or nearest_free(want, drop_spots(layout, radius), layout.cup_radius + radius)
+        spots.append(spot or tee)
     return spots
+
+
+def start_problem(layout: HoleLayout, radius: float, players: int) -> str | None:
+    """Why `players` balls of this radius cannot start this hole as they should (apart, and clear of
+    the cup), or None."""
+    spots = tee_spots(layout, radius, players)
+    if any(math.dist(a, b) < 2.0 * radius for k, a in enumerate(spots) for b in spots[k + 1:]):
+        return f"{players} players' balls ({2 * radius:g} m across) do not fit apart on the green"
+    if any(math.dist(spot, layout.cup) < layout.cup_radius + radius + TEE_SPACING * radius for spot in spots):
+        return f"with {players} players a ball ({2 * radius:g} m across) starts beside the cup: no room near the tee"
+    return None
 
 
 def drop_spots(layout: HoleLayout, radius: float) -> tuple[tuple[float, float], ...]:

@@ -55,8 +55,19 @@ def format_loc(loc: Loc) -> str:
         if isinstance(part, int):
             out += f"[{part}]"
         else:
-            out += f".{part}" if out else str(part)
+            out += f".{_key_text(part)}" if out else _key_text(part)
     return out or "(top level)"
+
+
+def _key_text(key: object) -> str:
+    """A key as an error line names it: as written if it is short, printable and unpadded; else quoted
+    with its escapes, cut short (an unknown key can be anything: a line break, a terminal's escape
+    code, a direction override, 400 KB)."""
+    text = str(key)
+    if text and text.isprintable() and text.strip() == text and len(text) <= 40:
+        return text
+    shown = repr(text[:40])
+    return shown + "..." if len(text) > 40 else shown
 
 
 class _Loader(yaml.SafeLoader):

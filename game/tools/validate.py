@@ -8,6 +8,7 @@ from pathlib import Path
 
 from polygolf.engine.golf.holes import Hole, load_courses, load_hole_file
 from polygolf.engine.golf.scenes import scene_hole
+from polygolf.engine.golf.world import MAX_PLAYERS, start_problem
 from polygolf.engine.loading.course import load_library
 from polygolf.engine.loading.paths import content_roots
 from polygolf.engine.loading.scene import load_scene
@@ -26,7 +27,8 @@ def check_file(path: Path) -> list[ContentError]:
             return [p for c in load_courses(path, taken=_taken_before(path)) for h in c.holes
                     if isinstance(h, ContentError) for p in h.problems]
         elif kind == "hole":
-            return _unreachable(path, load_hole_file(path))
+            hole = load_hole_file(path)
+            return _unreachable(path, hole) + _crowded_tee(path, hole)
         elif kind == "scene":
             scene_hole(load_scene(path), path)
         elif kind == "theme":
@@ -44,16 +46,30 @@ def _unreachable(path: Path, hole: Hole) -> list[ContentError]:
     map: where the ball fits between walls, out of water), for all its open borders: an obstacle
     or a gate narrower than the ball closing the way. (Validation's own, not loading's: the
     game's start does not pay for a route map of every hole.)"""
-    from polygolf.engine.golf.search import RouteMap
+    from polygolf.engine.golf.search import ROUTE_STEP, RouteMap
 
     layout = hole.layout
-    if hole.spec.launch is not None or math.isfinite(RouteMap(layout, hole.library.ball.radius)(*layout.tee)):
+    route = RouteMap(layout, hole.library.ball.radius)
+    # (A hole too large for the map's usual step gets a coarser map, which may miss a narrow way: no
+    # claim is made from it.)
+    if hole.spec.launch is not None or route.step > ROUTE_STEP or math.isfinite(route(*layout.tee)):
         return []
     _, lines = load_yaml(path)
     loc = ("tiles", len(hole.spec.tiles) - 1)
     return [ContentError(path, line_of(loc, lines), format_loc(loc),
                          f"the cup cannot be reached from the tee: walls, gates or water close every way for a ball "
                          f"{2 * hole.library.ball.radius:g} m across")]
+
+
+def _crowded_tee(path: Path, hole: Hole) -> list[ContentError]:
+    """Hot seat on this hole: up to four balls must start apart and clear of the cup (a library's ball
+    too large for the tee's tile has nowhere to put them)."""
+    problem = next((p for n in range(2, MAX_PLAYERS + 1)
+                    if (p := start_problem(hole.layout, hole.library.ball.radius, n)) is not None), None)
+    if problem is None or hole.spec.launch is not None:
+        return []
+    _, lines = load_yaml(path)
+    return [ContentError(path, line_of(("tiles", 0), lines), format_loc(("tiles", 0)), problem)]
 
 
 def _taken_before(path: Path) -> list[str]:

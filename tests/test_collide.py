@@ -102,8 +102,8 @@ def test_time_of_impact_s_quick_answers_are_the_advancement_s_own():
                              _NOWHERE, True, rates, abs(end[2] - start[2]) * body.reach[i], target, tolerance,
                              allowance, rates, False, work)
             # (The sweep's stop short of the wall stands only where the piece would go on to touch it.)
-            if alone < 1.0 and target > 0.0 and stays_clear(body.verts, s, e, start, end, wall.verts, wall.normals,
-                                                              ws, we, np.zeros(3), -GAP_TOLERANCE):
+            if alone < 1.0 and target > 0.0 and stays_clear(body.verts, body.normals, s, e, start, end, wall.verts,
+                                                              wall.normals, ws, we, np.zeros(3), -GAP_TOLERANCE, alone):
                 alone, let_go = NO_HIT, let_go + 1
             assert got == alone
             quick += got == NO_HIT
@@ -112,11 +112,27 @@ def test_time_of_impact_s_quick_answers_are_the_advancement_s_own():
     assert quick > 500 and hits > 100 and let_go > 0  # every answer (let go: 3 of the 6 000)
 
 
-def test_stays_clear_is_the_least_distance_beyond_a_wall_face_over_the_whole_motion():
-    """`toi.stays_clear` (exact: the bottom of each vertex's circle) against the motion sampled at
-    20 001 poses: for a hexagon and a star's pieces moving and turning (up to two turns a substep)
-    about a slanted and a square wall piece, it says clear where some face keeps every sampled vertex
-    more than the clearance (and a sampling step's travel) beyond it, and not clear where none does."""
+def _point_edges(points: tuple, polygon_: tuple) -> float:
+    """The least distance from the points (x, y: (sample, point)) to the polygon's edges (x, y: (sample,
+    vertex) or (vertex,) for one that stands still), over every sample."""
+    px, py = points
+    ax, ay = np.broadcast_to(polygon_[0], px.shape[:1] + polygon_[0].shape[-1:]), \
+        np.broadcast_to(polygon_[1], px.shape[:1] + polygon_[1].shape[-1:])
+    bx, by = np.roll(ax, -1, axis=-1), np.roll(ay, -1, axis=-1)
+    ex, ey = (bx - ax)[:, None, :], (by - ay)[:, None, :]
+    dx, dy = px[:, :, None] - ax[:, None, :], py[:, :, None] - ay[:, None, :]
+    t = np.clip((dx * ex + dy * ey) / (ex * ex + ey * ey), 0.0, 1.0)
+    return float(np.hypot(dx - t * ex, dy - t * ey).min())
+
+
+@pytest.mark.parametrize("clearance", [0.01, -1e-4])
+def test_stays_clear_is_never_wrong_and_exact_along_a_wall_face(clearance):
+    """`toi.stays_clear` against the motion sampled at 20 001 poses, for a hexagon and a star's pieces
+    moving and turning (up to two turns a substep) about a slanted and a square wall piece: where it
+    says clear, the pieces' separation (their distance apart, or less their overlap) stays beyond the
+    clearance at every pose; where a wall face keeps every sampled vertex beyond the clearance by more
+    than a sampling step's travel, it says clear (exact along a face: the bottom of each vertex's
+    circle); and both answers come up."""
     from polygolf.engine.physics.toi import stays_clear
 
     rng = np.random.default_rng(11)
@@ -125,7 +141,7 @@ def test_stays_clear_is_the_least_distance_beyond_a_wall_face_over_the_whole_mot
     pieces = [polygon.regular_polygon(6, 0.3), *polygon.convex_pieces(polygon.star_polygon(5, 2, 0.35))]
     body = ConvexSet.of(pieces, [polygon.edge_normals(p) for p in pieces])
     ts = np.linspace(0.0, 1.0, 20001)
-    clearance, said = 0.01, {True: 0, False: 0}
+    said = {True: 0, False: 0}
     for _ in range(300):
         i, g = int(rng.integers(len(pieces))), int(rng.integers(len(walls)))
         s, e, ws, we = body.first[i], body.first[i + 1], wall.first[g], wall.first[g + 1]
@@ -133,19 +149,28 @@ def test_stays_clear_is_the_least_distance_beyond_a_wall_face_over_the_whole_mot
         end = start + np.array([*rng.normal(0.0, 0.3, 2), rng.normal(0.0, 4.0)])
         poses = start + ts[:, None] * (end - start)  # (sample, x y angle)
         c, sn = np.cos(poses[:, 2:]), np.sin(poses[:, 2:])
-        lx, ly = body.verts[s:e, 0], body.verts[s:e, 1]
+        lx, ly, mx, my = body.verts[s:e, 0], body.verts[s:e, 1], body.normals[s:e, 0], body.normals[s:e, 1]
         x, y = poses[:, :1] + c * lx - sn * ly, poses[:, 1:2] + sn * lx + c * ly  # (sample, vertex)
+        nx_, ny_ = c * mx - sn * my, sn * mx + c * my  # the piece's faces' normals
         wx, wy = wall.verts[ws:we, 0], wall.verts[ws:we, 1]
         nx, ny = wall.normals[ws:we, 0], wall.normals[ws:we, 1]
-        # Each face's least sampled separation of the piece.
-        lowest = ((x[:, :, None] - wx) * nx + (y[:, :, None] - wy) * ny).min(axis=(0, 1))
+        beyond_wall = ((x[:, :, None] - wx) * nx + (y[:, :, None] - wy) * ny).min(axis=1)  # (sample, wall face)
+        beyond_piece = ((wx[None, None, :] - x[:, :, None]) * nx_[:, :, None]
+                        + (wy[None, None, :] - y[:, :, None]) * ny_[:, :, None]).min(axis=2)  # (sample, face)
+        apart = np.maximum(beyond_wall.max(axis=1), beyond_piece.max(axis=1))  # (separating axes' best)
         between = (np.hypot(*(end[:2] - start[:2])) + abs(end[2] - start[2]) * body.reach[i]) / (len(ts) - 1)
-        clear = stays_clear(body.verts, s, e, start, end, wall.verts, wall.normals, ws, we, np.zeros(3), clearance)
-        if lowest.max() > clearance + between:
+        clear = stays_clear(body.verts, body.normals, s, e, start, end, wall.verts, wall.normals, ws, we, np.zeros(3),
+                            clearance, 0.0)
+        if clear and clearance < 0.0:  # (overlapping or not, no axis separates them more than the best face)
+            assert apart.min() > clearance - 1e-9
+        if clear and clearance > 0.0:  # (apart: the least of the vertex-to-edge distances either way)
+            assert apart.min() > 0.0
+            assert min(_point_edges((x, y), (wx, wy)), _point_edges((np.broadcast_to(wx, x.shape[:1] + wx.shape),
+                                                                     np.broadcast_to(wy, x.shape[:1] + wy.shape)),
+                                                                    (x, y))) > clearance - 1e-9
+        if beyond_wall.min(axis=0).max() > clearance + between:
             assert clear
-        if lowest.max() <= clearance:
-            assert not clear
-        said[clear] += 1
+        said[bool(clear)] += 1
     assert said[True] > 30 and said[False] > 30
 
 

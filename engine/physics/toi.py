@@ -288,48 +288,137 @@ def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float,
     # gap test's tolerance, beyond every face): a tip swinging past a rail within the target, and a
     # ball sliding level onto the next of two flush boxes, are let go (the advancement's bound for a
     # turn is the same at every point of the piece, and it knows no seams; `stays_clear` is exact).
-    if t < 1.0 and target > 0.0 and stays_clear(lv, s, e, start, end, wv, wn, ws, we, _NOWHERE, -GAP_TOLERANCE):
+    if t < 1.0 and target > 0.0 and stays_clear(lv, ln, s, e, start, end, wv, wn, ws, we, _NOWHERE, -GAP_TOLERANCE,
+                                                t):
         return NO_HIT
     return t
 
 
-@inlined_leaf
-def stays_clear(lv: np.ndarray, s: int, e: int, start: np.ndarray, end: np.ndarray, wv: np.ndarray, wn: np.ndarray,
-                ws: int, we: int, at: np.ndarray, clearance: float) -> bool:
-    """Whether the piece (rows s..e, body frame), moving start -> end (x, y, angle, each linear in
-    t), stays more than `clearance` beyond one face of the still piece (rows ws..we, posed `at`: a
-    wall's at `_NOWHERE`, its rows being the world's) all the way: then it never comes that near it
-    (a negative clearance: never sinks deeper than that into it, along that face).
+# `stays_clear` walks the rest of a motion in parts, first a quarter of it: a part that some axis
+# clears is passed and the next one tried twice as long; one that none clears is tried half as long,
+# down to CLEAR_FINEST of the rest (then the answer is no), at most CLEAR_STEPS tries in all.
+CLEAR_FIRST = 0.25
+CLEAR_FINEST = 1.0 / 4096.0
+CLEAR_STEPS = 512
 
-    Exact, not a bound: along a fixed face normal n, a vertex at distance r and polar angle phi
-    from the body's origin lies at f(t) = a + b t + r cos(psi0 + w t) (a, b: the origin's start
-    and step along n; w: the turn; psi0 = angle + phi - angle(n)), whose least value on [0, 1] is
-    at an end or where f' = b - r w sin(psi) = 0 with cos(psi) < 0
-    (the bottom of the vertex's circle, a turn apart from the next)."""
-    dx, dy, turn = end[0] - start[0], end[1] - start[1], end[2] - start[2]
+
+@leaf_kernel
+def stays_clear(lv: np.ndarray, ln: np.ndarray, s: int, e: int, start: np.ndarray, end: np.ndarray, wv: np.ndarray,
+                wn: np.ndarray, ws: int, we: int, at: np.ndarray, clearance: float, since: float) -> bool:
+    """Whether the piece (rows s..e, body frame), moving start -> end (x, y, angle, each linear in
+    t), stays more than `clearance` from the still piece (rows ws..we, posed `at`: a wall's at
+    `_NOWHERE`, its rows being the world's) from t = `since` to 1 (a negative clearance: never sinks
+    deeper than that into it). Asked along axes each of which bounds the distance from below: the
+    still piece's faces over the whole rest; else, part by part (see CLEAR_FIRST), those faces or
+    the moving piece's own, turning with it. Along a still face the answer is exact (`_least_along`),
+    along a turning one a close lower bound (`_least_beyond_face`), not the advancement's bound; an
+    answer of no may be wrong (the caller then keeps the advancement's stop), yes never."""
+    if _part_clear(lv, ln, s, e, start, end, wv, wn, ws, we, at, clearance, since, 1.0, False):
+        return True
+    if not _part_clear(lv, ln, s, e, start, end, wv, wn, ws, we, at, clearance, 1.0, 1.0, True):
+        return False  # (sunk in where the motion ends: an impact, as a rule, asked about at once)
+    t, width, finest = since, CLEAR_FIRST * (1.0 - since), CLEAR_FINEST * (1.0 - since)
+    for _ in range(CLEAR_STEPS):
+        last = t + width >= 1.0
+        if last:
+            width = 1.0 - t
+        if _part_clear(lv, ln, s, e, start, end, wv, wn, ws, we, at, clearance, t, 1.0 if last else t + width,
+                       True):
+            if last:
+                return True
+            t += width
+            width *= 2.0
+        else:
+            width *= 0.5
+            if width < finest:
+                return False
+    return False
+
+
+@leaf_kernel
+def _part_clear(lv: np.ndarray, ln: np.ndarray, s: int, e: int, start: np.ndarray, end: np.ndarray, wv: np.ndarray,
+                wn: np.ndarray, ws: int, we: int, at: np.ndarray, clearance: float, t0: float, t1: float,
+                own_faces: bool) -> bool:
+    """`stays_clear` over [t0, t1]: along a face of the still piece, or (`own_faces`) of the moving
+    piece, turning with it (`_least_beyond_face`)."""
     c, sn = math.cos(at[2]), math.sin(at[2])  # (1 and 0 for a wall: its rows as they are)
     for k in range(ws, we):
         nx, ny = c * wn[k, 0] - sn * wn[k, 1], sn * wn[k, 0] + c * wn[k, 1]
-        wx, wy = at[0] + c * wv[k, 0] - sn * wv[k, 1], at[1] + sn * wv[k, 0] + c * wv[k, 1]
-        a = (start[0] - wx) * nx + (start[1] - wy) * ny
-        b = dx * nx + dy * ny
-        facing = math.atan2(ny, nx)
-        lowest = math.inf
-        for j in range(s, e):
-            r = math.hypot(lv[j, 0], lv[j, 1])
-            psi0 = start[2] + math.atan2(lv[j, 1], lv[j, 0]) - facing
-            low = min(a + r * math.cos(psi0), a + b + r * math.cos(psi0 + turn))
-            if r > 0.0 and turn != 0.0 and abs(b) <= abs(r * turn):
-                bottom = math.pi - math.asin(b / (r * turn))  # a psi where f' = 0, cos(psi) <= 0
-                lo, hi = min(psi0, psi0 + turn), max(psi0, psi0 + turn)
-                psi = bottom + 2.0 * math.pi * math.ceil((lo - bottom) / (2.0 * math.pi))
-                while psi <= hi:
-                    low = min(low, a + b * ((psi - psi0) / turn) + r * math.cos(psi))
-                    psi += 2.0 * math.pi
-            lowest = min(lowest, low)
-        if lowest > clearance:
+        if _least_along(lv, s, e, start, end, nx, ny, _reach_along(wv, ws, we, at, c, sn, nx, ny), t0,
+                        t1) > clearance:
             return True
+    if own_faces:
+        for i in range(s, e):
+            if _least_beyond_face(lv, ln, i, start, end, wv, ws, we, at, c, sn, t0, t1) > clearance:
+                return True
     return False
+
+
+@inlined_leaf
+def _least_beyond_face(lv: np.ndarray, ln: np.ndarray, i: int, start: np.ndarray, end: np.ndarray, wv: np.ndarray,
+                       ws: int, we: int, at: np.ndarray, c: float, sn: float, t0: float, t1: float) -> float:
+    """A lower bound, over t in [t0, t1], of how far every vertex w of the still piece (rows ws..we,
+    posed `at`; c, sn: its angle's cosine and sine) lies beyond face i of the moving piece, which
+    turns with it: g(t) = (w - p(t)) . u(t) - v_i . n_i, u the face's normal turned by the piece's
+    angle. The lesser end, less what g'' allows between the ends: |g''| <= 2 |w| |d| + w^2 |q|
+    (w the turn, d the step, q = w - p, longest at an end), times (t1 - t0)^2 / 8."""
+    dx, dy, turn = end[0] - start[0], end[1] - start[1], end[2] - start[2]
+    offset = lv[i, 0] * ln[i, 0] + lv[i, 1] * ln[i, 1]
+    facing = math.atan2(ln[i, 1], ln[i, 0])
+    u0x, u0y = math.cos(start[2] + turn * t0 + facing), math.sin(start[2] + turn * t0 + facing)
+    u1x, u1y = math.cos(start[2] + turn * t1 + facing), math.sin(start[2] + turn * t1 + facing)
+    p0x, p0y, p1x, p1y = start[0] + dx * t0, start[1] + dy * t0, start[0] + dx * t1, start[1] + dy * t1
+    bend = 2.0 * abs(turn) * math.hypot(dx, dy)
+    width = (t1 - t0) * (t1 - t0) / 8.0
+    lowest = math.inf
+    for k in range(ws, we):
+        wx, wy = at[0] + c * wv[k, 0] - sn * wv[k, 1], at[1] + sn * wv[k, 0] + c * wv[k, 1]
+        g0 = (wx - p0x) * u0x + (wy - p0y) * u0y - offset
+        g1 = (wx - p1x) * u1x + (wy - p1y) * u1y - offset
+        q = max(math.hypot(wx - p0x, wy - p0y), math.hypot(wx - p1x, wy - p1y))
+        lowest = min(lowest, min(g0, g1) - (bend + turn * turn * q) * width)
+    return lowest
+
+
+@inlined_leaf
+def _reach_along(wv: np.ndarray, ws: int, we: int, at: np.ndarray, c: float, sn: float, nx: float, ny: float
+                 ) -> float:
+    """How far the still piece (rows ws..we, posed `at`; c, sn: its angle's cosine and sine) reaches
+    along the axis (nx, ny)."""
+    most = -math.inf
+    for k in range(ws, we):
+        x, y = at[0] + c * wv[k, 0] - sn * wv[k, 1], at[1] + sn * wv[k, 0] + c * wv[k, 1]
+        most = max(most, x * nx + y * ny)
+    return most
+
+
+@inlined_leaf
+def _least_along(lv: np.ndarray, s: int, e: int, start: np.ndarray, end: np.ndarray, nx: float, ny: float,
+                 beyond: float, t0: float, t1: float) -> float:
+    """The least, over t in [t0, t1], of how far every vertex of the piece (rows s..e, body frame;
+    moving start -> end) lies along the fixed axis (nx, ny) beyond `beyond`. Exact: a vertex at
+    distance r and polar angle phi from the body's origin lies at f(t) = a + b t + r cos(psi0 + w t)
+    (a, b: the origin's start and step along the axis; w: the turn; psi0 = angle + phi - angle of
+    the axis), whose least value is at an end or where f' = b - r w sin(psi) = 0 with cos(psi) < 0
+    (the bottom of the vertex's circle, a turn apart from the next)."""
+    dx, dy, turn = end[0] - start[0], end[1] - start[1], end[2] - start[2]
+    a = start[0] * nx + start[1] * ny - beyond
+    b = dx * nx + dy * ny
+    facing = math.atan2(ny, nx)
+    lowest = math.inf
+    for j in range(s, e):
+        r = math.hypot(lv[j, 0], lv[j, 1])
+        psi0 = start[2] + math.atan2(lv[j, 1], lv[j, 0]) - facing
+        low = min(a + b * t0 + r * math.cos(psi0 + turn * t0), a + b * t1 + r * math.cos(psi0 + turn * t1))
+        if r > 0.0 and turn != 0.0 and abs(b) <= abs(r * turn):
+            bottom = math.pi - math.asin(b / (r * turn))  # a psi where f' = 0, cos(psi) <= 0
+            lo, hi = min(psi0 + turn * t0, psi0 + turn * t1), max(psi0 + turn * t0, psi0 + turn * t1)
+            psi = bottom + 2.0 * math.pi * math.ceil((lo - bottom) / (2.0 * math.pi))
+            while psi <= hi:
+                low = min(low, a + b * ((psi - psi0) / turn) + r * math.cos(psi))
+                psi += 2.0 * math.pi
+        lowest = min(lowest, low)
+    return lowest
 
 
 @leaf_kernel
@@ -352,11 +441,11 @@ def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reac
     # As against a wall (`time_of_impact`), where one of the two stands still: a ball passing another
     # player's resting ball without sinking into it is not put back.
     if t < 1.0 and target > 0.0:
-        if _still(start_b, end_b) and stays_clear(lva, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b,
-                                                  -GAP_TOLERANCE):
+        if _still(start_b, end_b) and stays_clear(lva, lna, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b,
+                                                  -GAP_TOLERANCE, t):
             return NO_HIT
-        if _still(start_a, end_a) and stays_clear(lvb, sb, eb, start_b, end_b, lva, lna, sa, ea, start_a,
-                                                  -GAP_TOLERANCE):
+        if _still(start_a, end_a) and stays_clear(lvb, lnb, sb, eb, start_b, end_b, lva, lna, sa, ea, start_a,
+                                                  -GAP_TOLERANCE, t):
             return NO_HIT
     return t
 

@@ -70,7 +70,7 @@ def tee_spots(layout: HoleLayout, radius: float, players: int) -> list[tuple[flo
                      if math.dist(c, layout.cup) >= off_cup and all(math.dist(c, s) >= step * 0.9 for s in spots)
                      and ball_fits(layout, *c, radius * 1.1)), None)
 
-    away = layout.cup_radius + radius + step  # a step clear of the cup's rim
+    away = _off_cup(layout, radius)
     for want in wanted:
         # Near the tee; else (a ball too big for the tee's tile) anywhere on the green, off the cup if
         # it can be (`start_problem` says when it cannot); else on the tee.
@@ -87,9 +87,14 @@ def start_problem(layout: HoleLayout, radius: float, players: int) -> str | None
     spots = tee_spots(layout, radius, players)
     if any(math.dist(a, b) < 2.0 * radius for k, a in enumerate(spots) for b in spots[k + 1:]):
         return f"{players} players' balls ({2 * radius:g} m across) do not fit apart on the green"
-    if any(math.dist(spot, layout.cup) < layout.cup_radius + radius + TEE_SPACING * radius for spot in spots):
+    if any(math.dist(spot, layout.cup) < _off_cup(layout, radius) for spot in spots):
         return f"with {players} players a ball ({2 * radius:g} m across) starts beside the cup: no room near the tee"
     return None
+
+
+def _off_cup(layout: HoleLayout, radius: float) -> float:
+    """How far from the cup's centre a ball starts: its edge a tee spacing clear of the cup's rim."""
+    return layout.cup_radius + radius + TEE_SPACING * radius
 
 
 def drop_spots(layout: HoleLayout, radius: float) -> tuple[tuple[float, float], ...]:

@@ -64,9 +64,11 @@ def _unreachable(path: Path, hole: Hole) -> list[ContentError]:
 def _crowded_tee(path: Path, hole: Hole) -> list[ContentError]:
     """Hot seat on this hole: up to four balls must start apart and clear of the cup (a library's ball
     too large for the tee's tile has nowhere to put them)."""
+    if hole.spec.launch is not None:
+        return []
     problem = next((p for n in range(2, MAX_PLAYERS + 1)
                     if (p := start_problem(hole.layout, hole.library.ball.radius, n)) is not None), None)
-    if problem is None or hole.spec.launch is not None:
+    if problem is None:
         return []
     _, lines = load_yaml(path)
     return [ContentError(path, line_of(("tiles", 0), lines), format_loc(("tiles", 0)), problem)]

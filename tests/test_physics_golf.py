@@ -219,6 +219,73 @@ def test_a_ball_passing_a_resting_ball_without_touching_it_is_untouched_and_on_t
         assert (other.x, other.y, other.vx, other.vy, other.spin) == (0.0, 0.0, 0.0, 0.0, 0.0)
 
 
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+@pytest.mark.parametrize(("shape", "spin", "other_velocity", "other_spin"), [
+    ({"regular": 6}, 0.0, (0.0, 0.0), 200.0),  # past a ball spinning where it stands
+    ({"star": [7, 3]}, -60.0, (25.0, 0.0), -20.0),  # alongside one rolling as fast
+    ({"star": [5, 2]}, 30.0, (-20.0, 0.0), 50.0),  # past one coming the other way
+])
+@pytest.mark.parametrize("gap", [0.002, 0.0005])
+def test_a_ball_passing_a_moving_ball_without_touching_it_leaves_both_untouched_and_on_time(
+        preset, shape, spin, other_velocity, other_spin, gap):
+    """Two balls that both move, their bounding circles `gap` apart where they pass (the other one
+    turning a vertex to the top then): neither is touched, and both are where they would be alone.
+    (Until stop 28 only a pass by a resting ball was asked whether it sinks in: at fast, passing a
+    ball spinning at 200 rad/s, the hexagon was put back up to 218 mm.)"""
+    from polygolf.engine.loading.scene import ShapeSpec
+    from polygolf.engine.physics.polygon import bounding_radius
+
+    outline, other = ShapeSpec(**shape, radius=0.1).outline(), ShapeSpec(regular=6, radius=0.3).outline()
+    reach = bounding_radius(outline) if spin else -min(y for _, y in outline)  # below its centre, at any turn
+    meet = 0.04  # s: when they pass, a vertex of the other at its top
+    vertex = math.atan2(other[0][1], other[0][0])
+    start = (-25.0 * meet, bounding_radius(other) + reach + gap)
+    other_start = (-other_velocity[0] * meet, 0.0)
+    scene = Scene.model_validate({"name": "pass", "bodies": [
+        {"name": "ball", "shape": {**shape, "radius": 0.1}, "position": list(start), "velocity": [25.0, 0.0],
+         "spin": spin, "restitution": 0.6, "friction": 0.5},
+        {"name": "other", "shape": {"regular": 6, "radius": 0.3}, "position": list(other_start),
+         "velocity": list(other_velocity), "spin": other_spin,
+         "angle": math.degrees(math.pi / 2 - vertex - other_spin * meet), "restitution": 0.6, "friction": 0.5}]})
+    with build_scene(scene, preset) as sim:
+        ball, other_ball = sim.body("ball"), sim.body("other")
+        for frame in range(1, 8):  # (a body put back makes its time up a substep later: look at every frame)
+            sim.step()
+            assert (ball.x, ball.y) == pytest.approx((start[0] + 25.0 * frame / 60, start[1]), abs=1e-6)
+            assert (other_ball.x, other_ball.y) == pytest.approx(
+                (other_start[0] + other_velocity[0] * frame / 60, 0.0), abs=1e-6)
+        assert (ball.vx, ball.vy, ball.spin) == pytest.approx((25.0, 0.0, spin), abs=1e-9)
+        assert (other_ball.vx, other_ball.vy, other_ball.spin) == pytest.approx((*other_velocity, other_spin), abs=1e-9)
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+@pytest.mark.parametrize(("shape", "spin"), [({"regular": 6}, 0.0), ({"star": [5, 2]}, 30.0), ({"regular": 3}, -10.0)])
+@pytest.mark.parametrize(("turning", "speed"), [(1.5, 25.0), (3.0, 3.0), (-2.0, 10.0)])
+def test_a_ball_passing_a_turning_windmill_s_tip_without_touching_it_is_untouched_and_on_time(
+        preset, shape, spin, turning, speed):
+    """A ball rolling past a windmill, its bounding circle half a millimetre outside the circle the
+    arm's tip turns on, the tip passing as it does: untouched and on time. (Until stop 28 a ball and
+    a turning arm were swept by the advancement alone: the hexagon was put back up to 132 mm.)"""
+    from polygolf.engine.assembly.assemble import assemble
+    from polygolf.engine.assembly.spec import DynamicPart, KinematicPart, WorldSpec
+    from polygolf.engine.components import Material, Windmill
+    from polygolf.engine.loading.scene import ShapeSpec
+    from polygolf.engine.physics.polygon import bounding_radius
+
+    outline = ShapeSpec(**shape, radius=0.1).outline()
+    arm = ((-0.15, -0.15), (2.0, -0.15), (2.0, 0.15), (-0.15, 0.15))
+    x = math.hypot(2.0, 0.15) + bounding_radius(outline) + 0.0005
+    meet = 0.05  # s: when the ball passes level with the pivot, the arm pointing at it
+    ball = DynamicPart("ball", outline, (x, -speed * meet), 1.0, Material(0.6, 0.3), 0.0, (0.0, speed), spin)
+    mill = KinematicPart("windmill", arm, (0.0, 0.0), turning, angle=-turning * meet, extras=(Windmill(turning),))
+    with assemble(WorldSpec("windmill-pass", [ball], [], [mill]), preset) as sim:
+        ball = sim.body("ball")
+        for frame in range(1, 13):
+            sim.step()
+            assert (ball.x, ball.y) == pytest.approx((x, speed * (frame / 60 - meet)), abs=1e-6)
+        assert (ball.vx, ball.vy, ball.spin) == pytest.approx((0.0, speed, spin), abs=1e-9)
+
+
 def _box(x0: float, y0: float, x1: float, y1: float) -> tuple[list, list]:
     return [(x0, y0), (x1, y0), (x1, y1), (x0, y1)], [(0.0, -1.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0)]
 

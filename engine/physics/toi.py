@@ -169,10 +169,10 @@ _NOWHERE = np.zeros(3)
 def toi_work(vertices: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Scratch for the time of impact of pieces of at most `vertices` vertices, made once a kernel
     call rather than once a pair of pieces: both pieces posed (vertices and normals), a row per
-    face for the separations, their rates and the separations at the start, and four motions
-    (x, y, angle)."""
+    face for the separations, their rates and the separations at the start, and five motions
+    (x, y, angle: two pieces' starts and ends, and `stays_clear`'s relative one)."""
     return (np.empty((4, vertices, 2)), np.empty(2 * vertices), np.empty(2 * vertices), np.empty(2 * vertices),
-            np.empty((4, 3)))
+            np.empty((5, 3)))
 
 
 @leaf_kernel
@@ -288,8 +288,8 @@ def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float,
     # gap test's tolerance, beyond every face): a tip swinging past a rail within the target, and a
     # ball sliding level onto the next of two flush boxes, are let go (the advancement's bound for a
     # turn is the same at every point of the piece, and it knows no seams; `stays_clear` is exact).
-    if t < 1.0 and target > 0.0 and stays_clear(lv, ln, s, e, start, end, wv, wn, ws, we, _NOWHERE, -GAP_TOLERANCE,
-                                                t):
+    if t < 1.0 and target > 0.0 and stays_clear(lv, ln, s, e, start, end, wv, wn, ws, we, _NOWHERE, _NOWHERE,
+                                                -GAP_TOLERANCE, t, work[4][4]):
         return NO_HIT
     return t
 
@@ -303,27 +303,49 @@ CLEAR_STEPS = 512
 
 
 @leaf_kernel
-def stays_clear(lv: np.ndarray, ln: np.ndarray, s: int, e: int, start: np.ndarray, end: np.ndarray, wv: np.ndarray,
-                wn: np.ndarray, ws: int, we: int, at: np.ndarray, clearance: float, since: float) -> bool:
-    """Whether the piece (rows s..e, body frame), moving start -> end (x, y, angle, each linear in
-    t), stays more than `clearance` from the still piece (rows ws..we, posed `at`: a wall's at
-    `_NOWHERE`, its rows being the world's) from t = `since` to 1 (a negative clearance: never sinks
-    deeper than that into it). Asked along axes each of which bounds the distance from below: the
-    still piece's faces over the whole rest; else, part by part (see CLEAR_FIRST), those faces or
-    the moving piece's own, turning with it. Along a still face the answer is exact (`_least_along`),
-    along a turning one a close lower bound (`_least_beyond_face`), not the advancement's bound; an
-    answer of no may be wrong (the caller then keeps the advancement's stop), yes never."""
-    if _part_clear(lv, ln, s, e, start, end, wv, wn, ws, we, at, clearance, since, 1.0, False):
+def stays_clear(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, start_a: np.ndarray, end_a: np.ndarray,
+                lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, start_b: np.ndarray, end_b: np.ndarray,
+                clearance: float, since: float, relative: np.ndarray) -> bool:
+    """Whether piece A (rows sa..ea, body frame) and piece B (rows sb..eb: a body's, or a wall's in
+    world coordinates with the motion `_NOWHERE` to `_NOWHERE`), each moving start -> end (x, y,
+    angle, each linear in t), stay more than `clearance` apart from t = `since` to 1 (a negative
+    clearance: never sink deeper than that into each other). `relative`: room for one motion's end.
+
+    A piece that does not turn is a frame the other moves in as the integrator moves it, linearly in
+    position and angle: seen from it, the question is that of a piece passing a still one, asked
+    along the still piece's faces exactly (`_least_along`). Where both turn, every face gets the
+    lower bound of `_least_beyond_face`. Either way the motion is walked part by part (see
+    CLEAR_FIRST) where no axis clears all of it. An answer of no may be wrong (the caller then keeps
+    the advancement's stop), yes never."""
+    if start_b[2] == end_b[2]:  # B slides or stands: A as it moves relative to B, B where it starts
+        for k in range(2):
+            relative[k] = end_a[k] - (end_b[k] - start_b[k])
+        relative[2] = end_a[2]
+        return _walk_clear(lva, lna, sa, ea, start_a, relative, lvb, lnb, sb, eb, start_b, start_b, clearance, since)
+    if start_a[2] == end_a[2]:  # A slides: the same from B's side
+        for k in range(2):
+            relative[k] = end_b[k] - (end_a[k] - start_a[k])
+        relative[2] = end_b[2]
+        return _walk_clear(lvb, lnb, sb, eb, start_b, relative, lva, lna, sa, ea, start_a, start_a, clearance, since)
+    return _walk_clear(lva, lna, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b, end_b, clearance, since)
+
+
+@leaf_kernel
+def _walk_clear(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, start_a: np.ndarray, end_a: np.ndarray,
+                lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, start_b: np.ndarray, end_b: np.ndarray,
+                clearance: float, since: float) -> bool:
+    """`stays_clear`'s walk: the whole rest along B's faces, then part by part along either's."""
+    if _part_clear(lva, lna, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b, end_b, clearance, since, 1.0, False):
         return True
-    if not _part_clear(lv, ln, s, e, start, end, wv, wn, ws, we, at, clearance, 1.0, 1.0, True):
+    if not _part_clear(lva, lna, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b, end_b, clearance, 1.0, 1.0, True):
         return False  # (sunk in where the motion ends: an impact, as a rule, asked about at once)
     t, width, finest = since, CLEAR_FIRST * (1.0 - since), CLEAR_FINEST * (1.0 - since)
     for _ in range(CLEAR_STEPS):
         last = t + width >= 1.0
         if last:
             width = 1.0 - t
-        if _part_clear(lv, ln, s, e, start, end, wv, wn, ws, we, at, clearance, t, 1.0 if last else t + width,
-                       True):
+        if _part_clear(lva, lna, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b, end_b, clearance, t,
+                       1.0 if last else t + width, True):
             if last:
                 return True
             t += width
@@ -336,47 +358,67 @@ def stays_clear(lv: np.ndarray, ln: np.ndarray, s: int, e: int, start: np.ndarra
 
 
 @leaf_kernel
-def _part_clear(lv: np.ndarray, ln: np.ndarray, s: int, e: int, start: np.ndarray, end: np.ndarray, wv: np.ndarray,
-                wn: np.ndarray, ws: int, we: int, at: np.ndarray, clearance: float, t0: float, t1: float,
-                own_faces: bool) -> bool:
-    """`stays_clear` over [t0, t1]: along a face of the still piece, or (`own_faces`) of the moving
-    piece, turning with it (`_least_beyond_face`)."""
-    c, sn = math.cos(at[2]), math.sin(at[2])  # (1 and 0 for a wall: its rows as they are)
-    for k in range(ws, we):
-        nx, ny = c * wn[k, 0] - sn * wn[k, 1], sn * wn[k, 0] + c * wn[k, 1]
-        if _least_along(lv, s, e, start, end, nx, ny, _reach_along(wv, ws, we, at, c, sn, nx, ny), t0,
-                        t1) > clearance:
-            return True
+def _part_clear(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, start_a: np.ndarray, end_a: np.ndarray,
+                lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, start_b: np.ndarray, end_b: np.ndarray,
+                clearance: float, t0: float, t1: float, own_faces: bool) -> bool:
+    """`stays_clear` over [t0, t1]: along a face of B (exact if B stands still), or (`own_faces`)
+    of A, turning with it (`_least_beyond_face`)."""
+    if start_b[0] == end_b[0] and start_b[1] == end_b[1] and start_b[2] == end_b[2]:
+        c, sn = math.cos(start_b[2]), math.sin(start_b[2])  # (1 and 0 for a wall: its rows as they are)
+        for k in range(sb, eb):
+            nx, ny = c * lnb[k, 0] - sn * lnb[k, 1], sn * lnb[k, 0] + c * lnb[k, 1]
+            if _least_along(lva, sa, ea, start_a, end_a, nx, ny, _reach_along(lvb, sb, eb, start_b, c, sn, nx, ny),
+                            t0, t1) > clearance:
+                return True
+    else:
+        for k in range(sb, eb):
+            if _least_beyond_face(lvb, lnb, k, start_b, end_b, lva, sa, ea, start_a, end_a, t0, t1) > clearance:
+                return True
     if own_faces:
-        for i in range(s, e):
-            if _least_beyond_face(lv, ln, i, start, end, wv, ws, we, at, c, sn, t0, t1) > clearance:
+        for i in range(sa, ea):
+            if _least_beyond_face(lva, lna, i, start_a, end_a, lvb, sb, eb, start_b, end_b, t0, t1) > clearance:
                 return True
     return False
 
 
 @inlined_leaf
-def _least_beyond_face(lv: np.ndarray, ln: np.ndarray, i: int, start: np.ndarray, end: np.ndarray, wv: np.ndarray,
-                       ws: int, we: int, at: np.ndarray, c: float, sn: float, t0: float, t1: float) -> float:
-    """A lower bound, over t in [t0, t1], of how far every vertex w of the still piece (rows ws..we,
-    posed `at`; c, sn: its angle's cosine and sine) lies beyond face i of the moving piece, which
-    turns with it: g(t) = (w - p(t)) . u(t) - v_i . n_i, u the face's normal turned by the piece's
-    angle. The lesser end, less what g'' allows between the ends: |g''| <= 2 |w| |d| + w^2 |q|
-    (w the turn, d the step, q = w - p, longest at an end), times (t1 - t0)^2 / 8."""
-    dx, dy, turn = end[0] - start[0], end[1] - start[1], end[2] - start[2]
-    offset = lv[i, 0] * ln[i, 0] + lv[i, 1] * ln[i, 1]
-    facing = math.atan2(ln[i, 1], ln[i, 0])
-    u0x, u0y = math.cos(start[2] + turn * t0 + facing), math.sin(start[2] + turn * t0 + facing)
-    u1x, u1y = math.cos(start[2] + turn * t1 + facing), math.sin(start[2] + turn * t1 + facing)
-    p0x, p0y, p1x, p1y = start[0] + dx * t0, start[1] + dy * t0, start[0] + dx * t1, start[1] + dy * t1
-    bend = 2.0 * abs(turn) * math.hypot(dx, dy)
+def _least_beyond_face(lvx: np.ndarray, lnx: np.ndarray, i: int, start_x: np.ndarray, end_x: np.ndarray,
+                       lvy: np.ndarray, ys: int, ye: int, start_y: np.ndarray, end_y: np.ndarray, t0: float,
+                       t1: float) -> float:
+    """A lower bound, over t in [t0, t1], of how far every vertex of piece Y (rows ys..ye) lies
+    beyond face i of piece X, each moving start -> end: g(t) = q(t) . n_i - v_i . n_i, q the vertex
+    seen from X (turned into X's frame). The lesser end, less what g'' allows between the ends,
+    times (t1 - t0)^2 / 8. With s the vertex's offset from X's origin in the world, q = R(-a_X) s,
+    so |q''| <= |s''| + 2 |w_X| |s'| + w_X^2 |s| (w: the turns), where |s''| = w_Y^2 |l| and
+    |s'| <= |d| + |w_Y| |l| (l the vertex in Y's frame, d the step of Y's origin less X's); |s| is
+    longest at an end if Y does not turn, else at most the origins' distance there plus |l|."""
+    dxx, dxy, wx = end_x[0] - start_x[0], end_x[1] - start_x[1], end_x[2] - start_x[2]
+    dyx, dyy, wy = end_y[0] - start_y[0], end_y[1] - start_y[1], end_y[2] - start_y[2]
+    offset = lvx[i, 0] * lnx[i, 0] + lvx[i, 1] * lnx[i, 1]
+    facing = math.atan2(lnx[i, 1], lnx[i, 0])
+    u0x, u0y = math.cos(start_x[2] + wx * t0 + facing), math.sin(start_x[2] + wx * t0 + facing)
+    u1x, u1y = math.cos(start_x[2] + wx * t1 + facing), math.sin(start_x[2] + wx * t1 + facing)
+    p0x, p0y, p1x, p1y = start_x[0] + dxx * t0, start_x[1] + dxy * t0, start_x[0] + dxx * t1, start_x[1] + dxy * t1
+    o0x, o0y, o1x, o1y = start_y[0] + dyx * t0, start_y[1] + dyy * t0, start_y[0] + dyx * t1, start_y[1] + dyy * t1
+    c0, s0 = math.cos(start_y[2] + wy * t0), math.sin(start_y[2] + wy * t0)
+    c1, s1 = math.cos(start_y[2] + wy * t1), math.sin(start_y[2] + wy * t1)
+    step = math.hypot(dyx - dxx, dyy - dxy)
+    apart = max(math.hypot(o0x - p0x, o0y - p0y), math.hypot(o1x - p1x, o1y - p1y))
     width = (t1 - t0) * (t1 - t0) / 8.0
     lowest = math.inf
-    for k in range(ws, we):
-        wx, wy = at[0] + c * wv[k, 0] - sn * wv[k, 1], at[1] + sn * wv[k, 0] + c * wv[k, 1]
-        g0 = (wx - p0x) * u0x + (wy - p0y) * u0y - offset
-        g1 = (wx - p1x) * u1x + (wy - p1y) * u1y - offset
-        q = max(math.hypot(wx - p0x, wy - p0y), math.hypot(wx - p1x, wy - p1y))
-        lowest = min(lowest, min(g0, g1) - (bend + turn * turn * q) * width)
+    for k in range(ys, ye):
+        w0x, w0y = o0x + c0 * lvy[k, 0] - s0 * lvy[k, 1], o0y + s0 * lvy[k, 0] + c0 * lvy[k, 1]
+        w1x, w1y = o1x + c1 * lvy[k, 0] - s1 * lvy[k, 1], o1y + s1 * lvy[k, 0] + c1 * lvy[k, 1]
+        g0 = (w0x - p0x) * u0x + (w0y - p0y) * u0y - offset
+        g1 = (w1x - p1x) * u1x + (w1y - p1y) * u1y - offset
+        if wy == 0.0:
+            far = max(math.hypot(w0x - p0x, w0y - p0y), math.hypot(w1x - p1x, w1y - p1y))
+            bend = 2.0 * abs(wx) * step
+        else:
+            arm = math.hypot(lvy[k, 0], lvy[k, 1])
+            far = apart + arm
+            bend = wy * wy * arm + 2.0 * abs(wx) * (step + abs(wy) * arm)
+        lowest = min(lowest, min(g0, g1) - (bend + wx * wx * far) * width)
     return lowest
 
 
@@ -438,21 +480,12 @@ def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reac
         return NO_HIT
     t = _advance(lva, lna, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b, end_b, False, work[2], turns, target,
                  tolerance, allowance, at_start, measured, work, posed_at_start)
-    # As against a wall (`time_of_impact`), where one of the two stands still: a ball passing another
-    # player's resting ball without sinking into it is not put back.
-    if t < 1.0 and target > 0.0:
-        if _still(start_b, end_b) and stays_clear(lva, lna, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b,
-                                                  -GAP_TOLERANCE, t):
-            return NO_HIT
-        if _still(start_a, end_a) and stays_clear(lvb, lnb, sb, eb, start_b, end_b, lva, lna, sa, ea, start_a,
-                                                  -GAP_TOLERANCE, t):
-            return NO_HIT
+    # As against a wall (`time_of_impact`): a ball passing another player's ball, resting or rolling,
+    # or the tip of a turning windmill's arm, without sinking into it is not put back.
+    if t < 1.0 and target > 0.0 and stays_clear(lva, lna, sa, ea, start_a, end_a, lvb, lnb, sb, eb, start_b, end_b,
+                                                -GAP_TOLERANCE, t, work[4][4]):
+        return NO_HIT
     return t
-
-
-@inlined_leaf
-def _still(start: np.ndarray, end: np.ndarray) -> bool:
-    return start[0] == end[0] and start[1] == end[1] and start[2] == end[2]
 
 
 @inlined_leaf

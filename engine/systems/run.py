@@ -216,7 +216,7 @@ def run_stages(held: Held, substeps: int, dt: float, stats: np.ndarray, metrics:
 
 def _no_work() -> tuple:
     """`toi.toi_work(0)`, made without calling a kernel (this runs at import)."""
-    return np.empty((4, 0, 2)), np.empty(0), np.empty(0), np.empty(0), np.empty((4, 3))
+    return np.empty((4, 0, 2)), np.empty(0), np.empty(0), np.empty(0), np.empty((5, 3))
 
 
 def _idle_inputs() -> tuple:

@@ -85,6 +85,15 @@ CASES = [
      "launch.every", "greater than or equal to 0.1"),
     ("hole-effects-unknown", "hole", _sub(HOLE, "par: 3", "par: 3\neffects: [lava]"), 3, "effects[0]",
      "Input should be"),
+    ("hole-effects-listed-absent", "hole", _sub(HOLE, "par: 3", "par: 3\neffects: [drag, sand]"), 3, "effects[1]",
+     "the hole holds no sand"),
+    ("hole-effects-leave-out-launch", "hole",
+     _sub(HOLE, "par: 3", "par: 3\nlaunch: {velocity: [1, 0]}\neffects: [drag]"), 4, "effects",
+     "leaves out launch, which the hole holds"),
+    ("hole-effects-leave-out-hazards", "hole",
+     "name: Eff\npar: 3\neffects: [sand]\ntiles:\n  - {at: [0, 0], borders: open-e}\n"
+     "  - {at: [1, 0], borders: open-ew, pattern: windmill}\n  - {at: [2, 0], borders: open-ew, pattern: pond-middle}\n"
+     "  - {at: [3, 0], borders: open-w}\n", 3, "effects", "leaves out water, windmill, which the hole holds"),
     ("hole-duplicate-tile", "hole", _sub(HOLE, "[1, 0], borders: open-w}", "[0, 0], borders: open-w}"), 5,
      "tiles[1].at", "already used"),
     ("hole-list-top", "hole", "- just\n- a list\n", 1, "(top level)", "should be a mapping"),

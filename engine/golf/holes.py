@@ -45,6 +45,7 @@ def load_hole(path: str | Path, library: TileLibrary, text: str | None = None) -
     layout = layout_hole(spec, library)
     _check_tee_and_cup(parsed, layout, library)
     _check_windmill_room(parsed, layout, library)
+    _check_listed_effects(parsed, layout)
     return Hole(id=parsed.path.stem, path=parsed.path, spec=spec, library=library, layout=layout)
 
 
@@ -61,6 +62,34 @@ def _check_tee_and_cup(parsed: ParsedHole, layout: HoleLayout, library: TileLibr
         for outline, (px, py), _ in layout.windmills:
             if math.hypot(x - px, y - py) < bounding_radius(outline) + need:
                 raise parsed.error(loc, f"the {what} at the tile's centre is within a windmill's sweep")
+
+
+# The effects a hole's own content brings (its tiles' hazards, its launcher): a list of effects must
+# name those it has, and only those (the physics effects it may choose freely).
+CONTENT_EFFECTS = ("sand", "water", "ice", "slope", "bumper", "windmill", "launch")
+
+
+def _check_listed_effects(parsed: ParsedHole, layout: HoleLayout) -> None:
+    """A hole that lists its effects keeps every hazard it holds working: left off the list, a pond
+    would be drawn but never take a ball, a windmill drawn but never turn. A hazard listed with
+    nothing of it in the hole is refused too (it says the hole has what it has not)."""
+    listed = parsed.spec.effects
+    if listed is None:
+        return
+    present = {kind for kind, _, _ in layout.zones}
+    present |= {"bumper"} if layout.bumpers else set()
+    present |= {"windmill"} if layout.windmills else set()
+    present |= {"launch"} if parsed.spec.launch is not None else set()
+    missing = [e for e in CONTENT_EFFECTS if e in present and e not in listed]
+    if missing:
+        raise parsed.error(("effects",), f"leaves out {', '.join(missing)}, which the hole holds (its tiles would be "
+                                         "drawn but do nothing): list them, or leave effects out for what the "
+                                         "hole needs")
+    extra = [e for e in CONTENT_EFFECTS if e in listed and e not in present]
+    if extra:
+        where = parsed.spec.effects.index(extra[0])
+        raise parsed.error(("effects", where), f"the hole holds no {extra[0]} (no tile's pattern has it)"
+                           if extra[0] != "launch" else "the hole has no launch (its `launch:` key)")
 
 
 def _check_windmill_room(parsed: ParsedHole, layout: HoleLayout, library: TileLibrary) -> None:

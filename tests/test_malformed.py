@@ -265,6 +265,17 @@ def test_malformed_content_is_refused_in_one_line(tmp_path, capsys, kind, conten
     assert re.fullmatch(r"1 file checked, \d+ problems?", out.strip().splitlines()[-1]), out
 
 
+def test_every_duplicate_key_of_a_file_is_reported(tmp_path, capsys):
+    """Not only the first (QA: three keys written twice, one line)."""
+    text = _sub(_sub(HOLE, "name: Case", "name: Case\nname: Again"), "par: 3", "par: 3\npar: 4")
+    path = place(tmp_path, "hole", text.replace("{at: [0, 0],", "{at: [0, 0], at: [5, 5],"))
+    assert main(["validate", str(path)]) == 1
+    out, err = capsys.readouterr()
+    assert err.strip().splitlines() == [f"{path}:2: name: duplicate key", f"{path}:4: par: duplicate key",
+                                        f"{path}:6: tiles[0].at: duplicate key"]
+    assert out.strip().splitlines()[-1] == "1 file checked, 3 problems"
+
+
 def test_the_corpus_is_large_and_covers_every_kind():
     kinds = {c[1] for c in CASES}
     assert len(CASES) >= 60 and kinds == {"hole", "library", "courses", "theme", "scene"}

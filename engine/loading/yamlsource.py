@@ -91,6 +91,7 @@ class _Builder:
         self.lines: dict[Loc, int] = {}
         self.budget = MAX_NODES
         self.active: set[int] = set()  # nodes being built: meeting one again is an alias to itself
+        self.duplicates: list[ContentError] = []  # every key written twice (the first one's value kept)
 
     def fail(self, node: yaml.Node, loc: Loc, message: str) -> ContentError:
         return ContentError(self.file, node.start_mark.line + 1, format_loc(loc), message)
@@ -124,7 +125,8 @@ class _Builder:
             if not isinstance(key, str | int) or isinstance(key, bool):
                 raise self.fail(key_node, loc, "keys must be names")
             if key in out:
-                raise self.fail(key_node, (*loc, key), "duplicate key")
+                self.duplicates.append(self.fail(key_node, (*loc, key), "duplicate key"))
+                continue
             self.lines[(*loc, key)] = key_node.start_mark.line + 1
             out[key] = self.build(value_node, (*loc, key))
         for key_node, value_node in merges:  # YAML's merge keys: a key written here wins, then the first merged
@@ -234,7 +236,10 @@ def load_yaml(path: str | Path, text: str | None = None) -> tuple[Any, dict[Loc,
         return None, {(): 1}
     builder = _Builder(file)
     builder.lines[()] = root.start_mark.line + 1
-    return builder.build(root, ()), builder.lines
+    data = builder.build(root, ())
+    if builder.duplicates:
+        raise ContentError.of(builder.duplicates)
+    return data, builder.lines
 
 
 def line_of(loc: Loc, lines: dict[Loc, int]) -> int:

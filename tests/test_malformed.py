@@ -94,6 +94,8 @@ CASES = [
      "name: Eff\npar: 3\neffects: [sand]\ntiles:\n  - {at: [0, 0], borders: open-e}\n"
      "  - {at: [1, 0], borders: open-ew, pattern: windmill}\n  - {at: [2, 0], borders: open-ew, pattern: pond-middle}\n"
      "  - {at: [3, 0], borders: open-w}\n", 3, "effects", "leaves out water, windmill, which the hole holds"),
+    ("hole-gate-wider-than-tile", "hole", _sub(HOLE, "borders: open-e}", "borders: {e: {gate: 100}}}"), 4,
+     "tiles[0].borders.e.gate", "leaves no wall either side of it"),
     ("hole-duplicate-tile", "hole", _sub(HOLE, "[1, 0], borders: open-w}", "[0, 0], borders: open-w}"), 5,
      "tiles[1].at", "already used"),
     ("hole-list-top", "hole", "- just\n- a list\n", 1, "(top level)", "should be a mapping"),
@@ -107,6 +109,8 @@ CASES = [
     ("tiles-size-inf", "library", _sub(LIBRARY, "tile_size: 6.0", "tile_size: .inf"), 4, "tile_size", "finite"),
     ("tiles-size-huge", "library", _sub(LIBRARY, "tile_size: 6.0", "tile_size: 1.0e+9"), 4, "tile_size",
      "less than or equal to 100"),
+    ("tiles-gate-wider-than-tile", "library", _sub(LIBRARY, "gate-e: {e: {gate: 1.6}}", "gate-e: {e: {gate: 6}}"), 40,
+     "border_sets.gate-e.e.gate", "a gate 6 m wide on a 6 m tile"),
     ("tiles-thick-walls", "library", _sub(LIBRARY, "wall_thickness: 0.3", "wall_thickness: 2.5"), None, None,
      "quarter of the tile"),
     ("tiles-restitution-5", "library", _sub(LIBRARY, "restitution: 0.6", "restitution: 5"), None,

@@ -180,7 +180,20 @@ def load_library(path: str | Path | None = None) -> TileLibrary:
     library = validate(TileLibrary, data, lines, path)
     if "empty" not in library.patterns:
         raise ContentError(path, line_of(("patterns",), lines), "patterns", "needs an 'empty' pattern")
+    problems = [ContentError(path, line_of(loc, lines), format_loc(loc), message)
+                for name, borders in library.border_sets.items()
+                for loc, message in _wide_gates(borders, library.tile_size, ("border_sets", name))]
+    if problems:
+        raise ContentError.of(problems)
     return library
+
+
+def _wide_gates(borders: BorderSet, size: float, loc: Loc) -> list[tuple[Loc, str]]:
+    """A gate as wide as the tile's side or wider, where and why: it would leave no wall either side
+    of it, an open side that says it is a gate."""
+    return [((*loc, side, "gate"), f"a gate {gate.gate:g} m wide on a {size:g} m tile leaves no wall either side of it: "
+                                   f"make it narrower than {size:g} m, or the side open")
+            for side in SIDES if isinstance(gate := getattr(borders, side), Gate) and gate.gate >= size]
 
 
 @dataclass(slots=True)
@@ -212,6 +225,9 @@ def parse_hole(path: str | Path, library: TileLibrary, text: str | None = None) 
             problems.append(fail(("tiles", i, "borders"), f"unknown border set {tile.borders!r}"))
         if tile.pattern not in library.patterns:
             problems.append(fail(("tiles", i, "pattern"), f"unknown pattern {tile.pattern!r}"))
+        if isinstance(tile.borders, BorderSet):
+            problems += [fail(loc, message) for loc, message in _wide_gates(tile.borders, library.tile_size,
+                                                                             ("tiles", i, "borders"))]
         if tile.at in placed:
             problems.append(fail(("tiles", i, "at"), f"tile {list(tile.at)} is already used by "
                                                      f"tiles[{placed[tile.at]}]"))

@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 from polygolf.engine.loading.limits import Colour, Name
 from polygolf.engine.loading.paths import content_roots, misplaced_folders
 from polygolf.engine.loading.scene import Strict_
-from polygolf.engine.loading.yamlsource import ContentError, line_of, load, load_yaml
+from polygolf.engine.loading.yamlsource import ContentError, line_of, load_yaml, validate
 
 RGBA = tuple[int, int, int, int]
 
@@ -49,8 +50,29 @@ class Theme(Strict_):
         return (*parts, 255) if len(parts) == 3 else tuple(parts)  # type: ignore[return-value]
 
 
+# Colours that must tell apart for the game to be playable: what lies on the green against both of its
+# checker's greens, the walls against the ball, the words against what they are written on.
+MUST_DIFFER = (
+    *((thing, green) for thing in ("ball", "cup", "wall", "obstacle", "tee", "flag", "arrow", "arrow_strong",
+                                   "sand_zone", "water", "ice", "slope", "bumper", "windmill")
+      for green in ("green", "green_alt")),
+    ("ball", "wall"), ("ball", "ball_edge"), ("cup", "cup_rim"), ("text", "background"), ("text", "panel"),
+    ("button_text", "button"), ("button_text", "button_hover"),
+)
+MIN_CONTRAST = 50.0  # RGB distance; the shipped themes' least is 61 (Sand's obstacle on its green)
+
+
 def load_theme(path: str | Path) -> Theme:
-    return load(Theme, path)
+    """A theme file, refused (every pair named) where two colours that must tell apart are too close."""
+    data, lines = load_yaml(path)
+    theme = validate(Theme, data, lines, path)
+    problems = [ContentError(path, line_of((a,), lines), a, f"{getattr(theme, a)} is too close to {b} "
+                                                             f"({getattr(theme, b)}) to tell apart: at least "
+                                                             f"{MIN_CONTRAST:g} apart in RGB, {apart:.0f} here")
+                for a, b in MUST_DIFFER if (apart := math.dist(theme.rgba(a)[:3], theme.rgba(b)[:3])) < MIN_CONTRAST]
+    if problems:
+        raise ContentError.of(problems)
+    return theme
 
 
 # Used only when no theme file can be read: plain, high-contrast, and obviously not a real theme.

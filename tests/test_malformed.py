@@ -152,6 +152,8 @@ CASES = [
     ("courses-nul", "courses", COURSES.encode().replace(b"Case", b"C\x00"), 2, "(file)", "control character"),
     # --- themes ------------------------------------------------------------------------------
     ("theme-bad-colour", "theme", _sub(THEME, '"#4f9d4a"', '"green"'), 5, "green", 'a colour is "#RRGGBB"'),
+    ("theme-ball-the-green-s-colour", "theme", _sub(THEME, 'ball: "#ffd54f"', 'ball: "#50a04a"'), 15, "ball",
+     "too close to green (#4f9d4a) to tell apart"),
     ("theme-missing-colour", "theme", re.sub(r"\nwall: [^\n]*", "", THEME, count=1), 3, "wall", "missing"),
     ("theme-number-colour", "theme", _sub(THEME, '"#4f9d4a"', "123456"), 5, "green", "valid string"),
     ("theme-unknown-key", "theme", THEME + "sparkle: \"#ffffff\"\n", None, "sparkle", "unknown key"),

@@ -142,6 +142,9 @@ def run_play(course: str, hole: int, theme: str | None, shape: str | None, prese
     if course == RANDOM_NINE:
         _check_display()  # before random-nine's minutes of building
     game = _game_for(course, hole, theme, shape, players=players, seed=seed)  # (a bad choice is said first)
+    problem = game.unplayable(hole - 1)
+    if problem is not None:  # (every hole broken: no round to open a window for)
+        raise ValueError(problem)
     _check_display()  # before arcade.gui is imported
     from polygolf.game.flow import ScreenFlow
 

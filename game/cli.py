@@ -383,7 +383,7 @@ def _autoplay(args: argparse.Namespace) -> int:
     from polygolf.engine.golf.holes import Hole, find_course
     from polygolf.game.app import build_nine_here
     from polygolf.game.golfer_process import SEARCH_EFFORT, Question, answer, origin_of
-    from polygolf.game.session import RANDOM_NINE, Game, par_text, strokes_text
+    from polygolf.game.session import RANDOM_NINE, Game, par_text, strokes_text, unplayable
     from polygolf.game.tools.par import LAUNCHES, launches
 
     game = Game.load()
@@ -396,6 +396,9 @@ def _autoplay(args: argparse.Namespace) -> int:
         raise ValueError(game.problems[0] if game.problems else "no course could be read")
     else:
         course = find_course(game.courses, args.course, game.course_problems)
+    problem = unplayable(course)
+    if problem is not None:  # (no round to play, save or record: said before anything is done)
+        raise ValueError(problem)
     launched = [k for k, hole in enumerate(course.holes, 1) if isinstance(hole, Hole) and launches(hole)]
     if launched:
         raise ValueError(f"{course.name}: hole {launched[0]} {LAUNCHES}")

@@ -2,6 +2,7 @@
 
     loading (the physics compiled or loaded) ─▶ menu, or the screen a command line asked for
     menu ─▶ (build Random nine, first time for a seed) ─▶ (guide, first time) ─▶ play ⇄ pause
+    menu ─▶ menu, its problem listed: a course with no hole to play (every one broken)
     menu ⇄ names, guide
               play ─▶ between ─▶ play … ─▶ results ─▶ play again | menu
               play ⇄ replay (L: the last shot again)
@@ -65,6 +66,11 @@ class ScreenFlow:
         if self.game.random_chosen and self.game.random_nine is None:
             # Built (and proven) first, with its progress shown; that screen comes back here when done.
             self._show(BuildView(self.game, NineBuild(self.game.random_seed).start(), self))
+            return
+        problem = self.game.unplayable(start_at)
+        if problem is not None:  # every hole broken: no round (it would end at once, saved as played)
+            self.game.show_problem(problem)
+            self.menu()
             return
         self.game.start_round(start_at)
         if self.game.guide_seen:

@@ -70,6 +70,19 @@ def is_computer(name: str) -> bool:
     return bool(words) and words[0].lower() == COMPUTER.lower()
 
 
+def unplayable(course: Course, start_at: int = 0) -> str | None:
+    """Why a round of `course` from hole `start_at + 1` cannot be played: every hole from there is
+    broken (one line, with the first hole's error); None when there is a hole to play. A round of
+    no hole would end at once on an empty scorecard, and be saved and recorded as if played."""
+    holes = course.holes[start_at:]
+    if any(isinstance(hole, Hole) for hole in holes):
+        return None
+    broken = [hole for hole in holes if isinstance(hole, ContentError)]
+    where = f" from hole {start_at + 1} on" if start_at else ""
+    why = f"{broken[0]}{f'; and {len(broken) - 1} more' if len(broken) > 1 else ''}" if broken else "no holes"
+    return f"course {course.name!r} has no playable hole{where} ({why})"
+
+
 def par_text(diff: int) -> str:
     """A score against par as golfers write it: E for level, else signed."""
     return "E" if diff == 0 else f"{diff:+d}"
@@ -586,8 +599,23 @@ class Game:
 
     # -- rounds -----------------------------------------------------------------------------------
 
+    def unplayable(self, start_at: int = 0) -> str | None:
+        """Why the chosen course has no round to play from hole `start_at + 1` (see `unplayable`), or None."""
+        return unplayable(self.course, start_at) if self.course is not None else None
+
+    def show_problem(self, problem: str) -> None:
+        """A content problem found since launch (a course with no hole to play), first in the menu's
+        list (said once however often it is found)."""
+        if problem in self.problems:
+            self.problems.remove(problem)
+        self.problems.insert(0, problem)
+
     def start_round(self, start_at: int = 0) -> Round:
-        """A new round of the chosen course for the chosen players, and its session (see RoundPlay)."""
+        """A new round of the chosen course for the chosen players, and its session (see RoundPlay).
+        A ValueError (one line) if the course has no hole to play from there."""
+        problem = self.unplayable(start_at)
+        if problem is not None:
+            raise ValueError(problem)
         self.close_session()
         self.round = Round(self.course, players=list(self.players), position=start_at)
         self.session = RoundPlay(self.round, self.shape, self.shape_label, self.preset)

@@ -177,3 +177,59 @@ def test_the_par_table_keeps_a_long_hole_id_apart_from_its_name():
     lines = table(proofs).splitlines()
     assert lines[1].split()[:2] == ["blocked_by_obstacle", "Blocked"]
     assert lines[1].index("Blocked") == lines[2].index("Straight") == lines[0].index("name")
+
+
+# QA's YAML "billion laughs": nine levels of nine aliases (9**9 values), refused by the loader.
+BOMB = """\
+a: &a ["x","x","x","x","x","x","x","x","x"]
+b: &b [*a,*a,*a,*a,*a,*a,*a,*a,*a]
+c: &c [*b,*b,*b,*b,*b,*b,*b,*b,*b]
+d: &d [*c,*c,*c,*c,*c,*c,*c,*c,*c]
+e: &e [*d,*d,*d,*d,*d,*d,*d,*d,*d]
+f: &f [*e,*e,*e,*e,*e,*e,*e,*e,*e]
+g: &g [*f,*f,*f,*f,*f,*f,*f,*f,*f]
+h: &h [*g,*g,*g,*g,*g,*g,*g,*g,*g]
+i: &i [*h,*h,*h,*h,*h,*h,*h,*h,*h]
+name: Lol
+par: 2
+tiles:
+  - {at: [0, 0], borders: open-e}
+  - {at: [1, 0], borders: open-w}
+"""
+
+
+def _content_with_a_bomb(data) -> tuple:
+    """The player's content: Only Bomb (its one hole unreadable) and Half (a good hole, then the bomb)."""
+    import shutil
+
+    from polygolf.engine.loading.paths import HOLES_DIR
+
+    holes = data / "content" / "holes"
+    holes.mkdir(parents=True)
+    shutil.copy(HOLES_DIR / "straight.yaml", holes / "good.yaml")
+    (holes / "bomb.yaml").write_text(BOMB)
+    (holes / "courses.yaml").write_text("courses:\n  - name: Only Bomb\n    holes: [bomb]\n"
+                                        "  - name: Half\n    holes: [good, bomb]\n")
+    return holes / "bomb.yaml"
+
+
+def test_a_course_with_no_playable_hole_is_one_line_and_no_round(isolated_user_data, tmp_path):
+    """QA: `play --course only-bomb` went to an empty scorecard ('0 strokes, level par'), and `autoplay`
+    exited 0 having saved a round and written a replay that `replay --verify` rejected (0 of 0 holes)."""
+    from polygolf.game.store import Store
+
+    bomb = _content_with_a_bomb(isolated_user_data)
+    why = f"{bomb}:1: e[5][5][7][5][0]: more than 50,000 values (aliases expanded): too large"
+    for args, where in ((["play", "--course", "only-bomb"], ""), (["play", "--course", "Only Bomb", "--hole", "1"], ""),
+                        (["autoplay", "--course", "only-bomb", "--preset", "fast"], ""),
+                        (["play", "--course", "half", "--hole", "2"], " from hole 2 on")):
+        name = "Half" if "half" in args else "Only Bomb"
+        result = run(*args)
+        assert (result.returncode, result.stdout) == (2, ""), result.stderr
+        assert result.stderr == f"polygolf: course '{name}' has no playable hole{where} ({why})\n"
+    assert not (isolated_user_data / "replays").exists() and Store(echo=False).round_count() == 0
+    for hole in ("1",):  # render draws one hole: that hole's error, said once
+        out = tmp_path / "bomb.png"
+        result = run("render", "only-bomb", hole, "--out", str(out))
+        assert (result.returncode, result.stdout, result.stderr) == (2, "", f"polygolf: {why}\n")
+        assert not out.exists()

@@ -326,3 +326,30 @@ def test_screens_keep_long_names_and_scores_inside_their_places(window, size, sh
     assert _extent(play.hud_texts["players"])[0] >= 0
     window.set_size(1280, 720)
     window.dispatch_events()
+
+
+def test_a_course_with_no_playable_hole_shows_its_problem_in_the_menu_and_starts_no_round(window):  # noqa: F811
+    """QA: Play on a course whose every hole is unreadable went straight to an empty scorecard."""
+    from polygolf.game.views.menu import MenuView
+
+    from .test_game_cli import _content_with_a_bomb
+
+    bomb = _content_with_a_bomb(data_dir())
+    game = Game.load()
+    ScreenFlow(window, game).menu()
+    while game.course.id != "only-bomb":
+        click(window, "course")
+    for _ in range(2):
+        click(window, "play")
+        menu = window.current_view
+        assert isinstance(menu, MenuView) and game.round is None and game.session is None
+        problems = menu.problems.text.split("\n")
+        assert problems[0].startswith(f"course 'Only Bomb' has no playable hole ({bomb}:1: ")
+        assert sum(p.startswith("course 'Only Bomb'") for p in problems) == 1  # (said once, however often asked)
+    assert Store(echo=False).round_count() == 0 and not (data_dir() / "replays").exists()
+    click(window, "course")  # Half: its first hole plays
+    click(window, "play")
+    if isinstance(window.current_view, GuideView):
+        key(window, arcade.key.ENTER)
+    assert isinstance(window.current_view, PlayView) and window.current_view.world.hole.id == "good"
+    window.current_view.close()

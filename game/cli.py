@@ -435,7 +435,7 @@ def _autoplay(args: argparse.Namespace) -> int:
 
 
 def _scores(args: argparse.Namespace) -> int:
-    from polygolf.game.session import strokes_text
+    from polygolf.game.session import escaped, strokes_text
     from polygolf.game.store import Store
 
     store = Store()
@@ -451,20 +451,24 @@ def _scores(args: argparse.Namespace) -> int:
 
         courses, unread = load_all_courses()
         find_course(courses, wanted, unread)  # (a course nobody knows is a mistyped name, not one without rounds)
-    if args.json:
+    if not store.done:  # (the database could not be read: its warning on stderr says why)
+        if not args.json:  # (with --json nothing on stdout: an empty list would say there are no rounds)
+            print("no rounds could be read" + (f" on {escaped(args.course)}" if args.course else ""))
+        return 1
+    if args.json:  # (JSON escapes every control character itself)
         print(json.dumps([{"course": b.course, "hole": b.hole, "number": None if b.position is None else b.position + 1,
                            "name": b.name, "shape": b.shape, "strokes": b.strokes, "par": b.par, "player": b.player,
                            "when": b.when} for b in bests]))
         return 0
-    if not bests and store.warnings:  # (the database could not be read: its warning says why)
-        print("no rounds could be read" + (f" on {args.course}" if args.course else ""))
-        return 1
     if not bests:
-        print("no rounds saved yet" + (f" on {args.course}" if args.course else ""))
+        print("no rounds saved yet" + (f" on {escaped(args.course)}" if args.course else ""))
         return 0
     for b in sorted(bests, key=lambda b: (b.course, b.shape, b.position is None, b.position or 0)):
-        where = f"{b.course} {f'hole {b.position + 1}' if b.hole is not None else 'course'} ({b.name})"
-        print(f"{where:<44} {b.shape:<14} {strokes_text(b.strokes):>11}, par {b.par:<3} {b.player}, {b.when[:10]}")
+        # Text read back from the database, which a hand may have edited: escaped, never raw to the terminal.
+        which = f"hole {b.position + 1}" if b.hole is not None else "course"
+        where = f"{escaped(b.course)} {which} ({escaped(b.name)})"
+        print(f"{where:<44} {escaped(b.shape):<14} {strokes_text(b.strokes):>11}, par {b.par:<3} {escaped(b.player)}, "
+              f"{escaped(b.when[:10])}")
     return 0
 
 

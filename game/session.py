@@ -70,6 +70,13 @@ def is_computer(name: str) -> bool:
     return bool(words) and words[0].lower() == COMPUTER.lower()
 
 
+def escaped(text: str) -> str:
+    """`text` to show on a terminal or a screen: every character that is not printable (a newline, an
+    ESC starting a terminal's colour code, a direction override) as its Python escape, '\\x1b'; the
+    rest as it is. For what was read back from the database, which a hand may have edited."""
+    return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in text)
+
+
 def unplayable(course: Course, start_at: int = 0) -> str | None:
     """Why a round of `course` from hole `start_at + 1` cannot be played: every hole from there is
     broken (one line, with the first hole's error); None when there is a hole to play. A round of

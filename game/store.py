@@ -24,6 +24,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
+from polygolf.engine.loading.limits import MAX_ENTRIES
 from polygolf.engine.loading.paths import data_dir, exclusive
 
 DB_NAME = "polygolf.db"
@@ -66,9 +67,19 @@ class Best:
 # Columns a best is read from, with the type each must hold: SQLite keeps whatever is written, so a
 # row edited by hand to another type is passed over rather than shown (or sorted, or subtracted) wrongly.
 HOLE_TYPES = {"r.course": "text", "h.hole": "text", "h.position": "integer", "h.name": "text", "r.shape": "text",
-              "h.strokes": "integer", "h.par": "integer", "c.name": "text", "r.finished_at": "text"}
+              "h.strokes": "integer", "h.par": "integer", "h.penalties": "integer", "h.picked_up": "integer",
+              "c.name": "text", "r.finished_at": "text"}
 ROUND_TYPES = {"r.course": "text", "r.course_name": "text", "r.shape": "text", "c.strokes": "integer",
                "c.par": "integer", "c.name": "text", "r.finished_at": "text"}
+# ... and the values a round can hold (a hole's strokes up to its most, 99; its par 1 to 20; a course of at
+# most MAX_ENTRIES holes, its card the sum of its holes' rows): a row edited by hand to -3 strokes is no best.
+MAX_STROKES, MAX_PAR = 99, 20
+HOLE_VALUES = (f"h.strokes BETWEEN 1 AND {MAX_STROKES} AND h.par BETWEEN 1 AND {MAX_PAR} AND h.position BETWEEN 0 AND "
+               f"{MAX_ENTRIES - 1} AND h.penalties >= 0 AND h.picked_up IN (0, 1) AND "
+               "length(c.name) > 0")
+ROUND_VALUES = (f"c.strokes BETWEEN 1 AND {MAX_STROKES * MAX_ENTRIES} AND c.par BETWEEN 1 AND {MAX_PAR * MAX_ENTRIES}"
+                " AND length(c.name) > 0 AND (c.strokes, c.par) = (SELECT SUM(strokes), SUM(par) FROM holes "
+                "WHERE holes.round_id = c.round_id AND holes.seat = c.seat)")
 
 
 def _not_a_folder(folder: Path) -> str | None:
@@ -96,6 +107,9 @@ class Store:
         self.path = self.folder / DB_NAME
         self.echo = echo
         self.warnings: list[str] = []
+        # Whether the last call did its work: a damaged file set aside and its work done on a fresh one
+        # did (with a warning); a database that could not be read at all did not.
+        self.done = True
 
     def warn(self, message: str) -> None:
         """One line on stderr, once: the same trouble on every menu click is said only the first time."""
@@ -171,7 +185,9 @@ class Store:
 
     def _transaction(self, work, default, what: str, write: bool = True):
         """Run `work(db)` in one transaction (`write`: one that writes); on trouble warn once and return
-        `default`. A damaged file is set aside and the work tried once more on a fresh one."""
+        `default` (and `done` is False). A damaged file is set aside and the work tried once more on a
+        fresh one."""
+        self.done = False
         for attempt in (1, 2):
             damage = None
             opened = self._identity()
@@ -192,6 +208,7 @@ class Store:
                 try:
                     result = work(db)
                     db.execute("COMMIT")
+                    self.done = True
                     return result
                 except (sqlite3.OperationalError, sqlite3.IntegrityError) as exc:  # (a constraint refused it)
                     self.warn(f"cannot {what}: {self.path}: {exc}")
@@ -276,8 +293,8 @@ class Store:
             holes = db.execute(
                 "SELECT r.course, h.hole, h.position, h.name, r.shape, h.strokes, h.par, c.name, r.finished_at "
                 "FROM holes h JOIN rounds r ON r.id = h.round_id JOIN cards c ON c.round_id = h.round_id "
-                f"AND c.seat = h.seat WHERE {_typed(HOLE_TYPES)}{cond} ORDER BY r.course, h.position, r.shape, "
-                "h.strokes, r.finished_at, h.seat", args).fetchall()
+                f"AND c.seat = h.seat WHERE {_typed(HOLE_TYPES)} AND {HOLE_VALUES}{cond} "
+                "ORDER BY r.course, h.position, r.shape, h.strokes, r.finished_at, h.seat", args).fetchall()
             seen = set()
             for row in holes:
                 key = (row[0], row[1], row[4])
@@ -286,7 +303,8 @@ class Store:
                     out.append(Best(row[0], row[1], row[2], row[3], row[4], row[5], row[6], row[7], row[8]))
             rounds = db.execute(
                 "SELECT r.course, r.course_name, r.shape, c.strokes, c.par, c.name, r.finished_at FROM cards c "
-                f"JOIN rounds r ON r.id = c.round_id WHERE r.complete = 1 AND {_typed(ROUND_TYPES)}{cond} "
+                f"JOIN rounds r ON r.id = c.round_id WHERE r.complete = 1 AND {_typed(ROUND_TYPES)} AND {ROUND_VALUES}"
+                f"{cond} "
                 "ORDER BY r.course, r.shape, c.strokes, r.finished_at, c.seat", args).fetchall()
             seen = set()
             for row in rounds:

@@ -702,3 +702,67 @@ def test_autoplay_says_which_holes_of_its_course_it_passes_over(capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert err[0].startswith(f"polygolf: skipped: {mine / 'bad.yaml'}:4: (yaml): ")
     assert err[1] == f"polygolf: skipped: {mine / 'courses.yaml'}:3: courses[0].holes[2]: no hole file missing.yaml"
+
+
+def test_rows_out_of_range_are_passed_over_and_names_are_never_shown_raw(capsys):
+    """QA: hand-edited rows of -3 and 0 strokes were listed as bests, and a player's name holding a
+    line break or a terminal's colour code (ESC [31m) was written raw to the terminal."""
+    assert autoplay() == 0
+    capsys.readouterr()
+    db = data_dir() / "polygolf.db"
+    with sqlite3.connect(db) as conn:
+        second, = conn.execute("SELECT * FROM holes WHERE position = 1").fetchall()
+
+    def numbers() -> list[int | None]:
+        assert main(["scores", "--json"]) == 0
+        return [b["number"] for b in json.loads(capsys.readouterr().out)]
+
+    assert numbers() == [1, 2, 3, None]
+    for column, value in (("strokes", -3), ("strokes", 0), ("strokes", 100), ("par", 0), ("par", 21),
+                          ("position", -1), ("penalties", -1), ("picked_up", 2)):
+        with sqlite3.connect(db) as conn:
+            conn.execute(f"UPDATE holes SET {column} = ? WHERE position = 1", (value,))
+        # Hole 2's row passed over; the course's too where its card is no longer the sum of its holes.
+        assert numbers() == ([1, 3] if column in ("strokes", "par") else [1, 3, None]), (column, value)
+        with sqlite3.connect(db) as conn:  # (back as it was)
+            conn.execute("DELETE FROM holes WHERE position NOT IN (0, 2)")
+            conn.execute(f"INSERT INTO holes VALUES ({', '.join('?' * len(second))})", second)
+        assert numbers() == [1, 2, 3, None]
+    with sqlite3.connect(db) as conn:
+        conn.execute("UPDATE cards SET strokes = 0, par = 0")  # a card of 0 strokes: no course best
+    assert numbers() == [1, 2, 3]
+    with sqlite3.connect(db) as conn:
+        conn.execute("UPDATE cards SET name = ?", ("Eve\n\x1b[31mRED\u202e",))
+    assert main(["scores"]) == 0
+    out = capsys.readouterr().out
+    lines = out.splitlines()
+    assert len(lines) == 3 and "\x1b" not in out and "\u202e" not in out
+    assert all(line.split(", par ")[1].split()[1] == "Eve\\n\\x1b[31mRED\\u202e," for line in lines), lines
+    assert main(["scores", "--json"]) == 0  # (JSON escapes it itself; the name is read back as it is)
+    out = capsys.readouterr().out
+    assert "\x1b" not in out and {b["player"] for b in json.loads(out)} == {"Eve\n\x1b[31mRED\u202e"}
+
+
+def test_scores_that_cannot_be_read_fail_with_or_without_json(capsys):
+    """QA: `scores` exited 1 on a database it could not read, `scores --json` 0 (with an empty list,
+    as if no round had been played)."""
+    (data_dir() / "polygolf.db").mkdir(parents=True)
+    for args in (["scores"], ["scores", "--json"], ["scores", "--course", "meadow", "--json"]):
+        assert main(args) == 1
+        out = capsys.readouterr()
+        assert "polygolf.db" in out.err
+        assert out.out == ("no rounds could be read\n" if args == ["scores"] else "")
+
+
+def test_scores_on_the_fresh_database_that_replaced_a_damaged_one_has_no_rounds_yet(capsys):
+    """QA: a damaged database set aside and a fresh one started: 'no rounds could be read', exit 1,
+    though everything was read (the fresh one is empty)."""
+    data_dir().mkdir(parents=True, exist_ok=True)
+    (data_dir() / "polygolf.db").write_bytes(b"\x00garbage, not SQLite\xff" * 200)
+    assert main(["scores"]) == 0
+    out = capsys.readouterr()
+    assert out.out == "no rounds saved yet\n"
+    assert "damaged" in out.err and "starting a fresh one" in out.err
+    assert len(list(data_dir().glob("polygolf.db.corrupt-*"))) == 1
+    (data_dir() / "polygolf.db").write_bytes(b"\x00garbage again\xff" * 200)
+    assert main(["scores", "--json"]) == 0 and capsys.readouterr().out == "[]\n"

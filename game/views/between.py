@@ -7,7 +7,7 @@ import arcade
 from arcade.gui import UIBoxLayout, UIView
 
 from polygolf.game.drawing import draw_backed, fit_width
-from polygolf.game.session import Game, HoleResult, Round, golf_name, par_text, penalty_text, strokes_text
+from polygolf.game.session import Game, HoleResult, Round, escaped, golf_name, par_text, penalty_text, strokes_text
 from polygolf.game.views.navigation import Navigator, window_key
 from polygolf.game.views.widgets import KeyboardButtons, themed_button, title
 
@@ -50,7 +50,7 @@ class BetweenView(UIView):
         hole = round_.course.holes[first.number - 1]
         best = game.best_hole(hole.id) if not isinstance(hole, Exception) else None
         self.best = arcade.Text(
-            f"Best on this hole with the {game.shape_label}: {strokes_text(best.strokes)} by {best.player}"
+            f"Best on this hole with the {game.shape_label}: {strokes_text(best.strokes)} by {escaped(best.player)}"
             if best else "No best kept for this hole yet: finish the round to set one", 0, 0,
             theme.rgba("text"), 14, anchor_x="center", anchor_y="center", italic=True)
         upcoming = round_.current()

@@ -10,7 +10,7 @@ import arcade
 from arcade.gui import UIBoxLayout, UIView
 
 from polygolf.game.drawing import draw_backed, fit_width
-from polygolf.game.session import Game, HoleResult, Round, par_text, strokes_text
+from polygolf.game.session import Game, HoleResult, Round, escaped, par_text, strokes_text
 from polygolf.game.views.navigation import Navigator, window_key
 from polygolf.game.views.widgets import KeyboardButtons, themed_button, title
 
@@ -71,7 +71,7 @@ class ResultsView(UIView):
             and best.when == game.session.record.recorded_at
         self.best = arcade.Text(f"{'New course' if this_round else 'Course'} best with the {game.shape_label}: "
                                 f"{strokes_text(best.strokes)} by "
-                                f"{best.player} ({verdict(best.strokes - best.par)})" if best else "", 0, 0,
+                                f"{escaped(best.player)} ({verdict(best.strokes - best.par)})" if best else "", 0, 0,
                                 theme.rgba("text"), 14, anchor_x="center", anchor_y="center", italic=True)
         warnings = game.store.warnings[-1:] if game.store is not None else []
         self.warning = arcade.Text(" ".join(w.removeprefix("polygolf: ") for w in warnings), 0, 0,

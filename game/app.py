@@ -94,7 +94,7 @@ def _game_for(course: str | None, hole: int, theme: str | None, shape, only=None
         raise ValueError(game.problems[0] if game.problems else "no course could be read")
     else:
         game.course_index = game.courses.index(find_course(game.courses, course, game.course_problems))
-    if theme:
+    if theme is not None:  # ('' too: no theme has no name, and it is refused as `--theme nope` is)
         game.theme_index = game.themes.index(find_theme(game.themes, theme))
     if shape is not None:
         game.shape_label, game.shape = parse_shape(shape) if isinstance(shape, str) else shape
@@ -161,10 +161,10 @@ def run_hole_file(path: Path, theme: str | None, shape, preset: str, watch: bool
     from polygolf.engine.golf.holes import Course, load_hole_file
 
     hole = load_hole_file(path)
+    game = _game_for(None, 1, theme, shape, Course(id=path.stem, name=path.name, holes=[hole]))  # (a bad theme too)
     _check_display()
     from polygolf.game.flow import ScreenFlow
 
-    game = _game_for(None, 1, theme, shape, Course(id=path.stem, name=path.name, holes=[hole]))
     game.preset = preset
     game.guide_seen = True
     game.record_rounds = False  # a hole being written: practice, nothing saved

@@ -500,6 +500,25 @@ def _replay(args: argparse.Namespace) -> int:
     return 0 if ok else 1
 
 
+def _hole_number(course: str, hole: str) -> int:
+    """`render`'s HOLE: a number as it is (the course says whether it has that hole), else a hole's name
+    looked up as `par` and `explain` look up COURSE:HOLE (`scenes.find_hole`: an unknown one lists the
+    course's holes, a broken one is its error); its number is where it first comes in its course."""
+    from polygolf.engine.golf.holes import Hole, find_course, load_all_courses
+    from polygolf.engine.golf.nine import COURSE_ID as RANDOM_NINE
+    from polygolf.engine.golf.nine import NINE
+    from polygolf.engine.golf.scenes import find_hole
+
+    if re.fullmatch(r"\s*[0-9]{1,4}\s*", hole):
+        return int(hole)
+    if course == RANDOM_NINE:  # (built from a seed, not content: its holes go by number)
+        raise ValueError(f"random-nine has holes 1 to {NINE}: give a number, not {hole!r}")
+    found = find_hole(f"{course}:{hole}", Path.cwd())
+    courses, unread = load_all_courses()
+    return next(k for k, h in enumerate(find_course(courses, course, unread).holes, 1)
+                if isinstance(h, Hole) and h.id == found.id)
+
+
 def _render(args: argparse.Namespace) -> int:
     from polygolf.engine.golf.nine import NINE
     from polygolf.game.app import WINDOW_SIZE, render_hole
@@ -512,9 +531,10 @@ def _render(args: argparse.Namespace) -> int:
     try:
         if args.seed is not None and args.course != "random-nine":
             raise ValueError("--seed is for random-nine")
-        if args.course == "random-nine" and args.hole > NINE:  # said before minutes of building
+        number = _hole_number(args.course, args.hole)
+        if args.course == "random-nine" and not 1 <= number <= NINE:  # said before minutes of building
             raise ValueError(f"random-nine has holes 1 to {NINE}")
-        out = _window(render_hole, args.course, args.hole, args.theme, args.shape, args.out, WINDOW_SIZE, args.seed,
+        out = _window(render_hole, args.course, number, args.theme, args.shape, args.out, WINDOW_SIZE, args.seed,
                       player_names(args.players, None))
     except OSError as exc:
         print(f"polygolf: --out: cannot write {args.out}: {exc.strerror or exc}", file=sys.stderr)
@@ -639,7 +659,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     render = sub.add_parser("render", help="draw a hole to a PNG without a window")
     render.add_argument("course")
-    render.add_argument("hole", type=int)
+    render.add_argument("hole", help="its number, or its name (its file's, as `par COURSE:HOLE` takes it: castle)")
     render.add_argument("--theme", default=None)
     render.add_argument("--shape", type=shape_arg, default=None)
     render.add_argument("--out", type=png_arg, required=True, help="PNG file to write (folders are made)")

@@ -228,8 +228,36 @@ def test_a_course_with_no_playable_hole_is_one_line_and_no_round(isolated_user_d
         assert (result.returncode, result.stdout) == (2, ""), result.stderr
         assert result.stderr == f"polygolf: course '{name}' has no playable hole{where} ({why})\n"
     assert not (isolated_user_data / "replays").exists() and Store(echo=False).round_count() == 0
-    for hole in ("1",):  # render draws one hole: that hole's error, said once
+    for hole in ("1", "bomb"):  # render draws one hole: that hole's error, said once
         out = tmp_path / "bomb.png"
         result = run("render", "only-bomb", hole, "--out", str(out))
         assert (result.returncode, result.stdout, result.stderr) == (2, "", f"polygolf: {why}\n")
         assert not out.exists()
+
+
+def test_an_empty_theme_name_is_refused_as_an_unknown_one_is(tmp_path):
+    from polygolf.engine.loading.paths import HOLES_DIR
+
+    for args in (["play", "--course", "meadow"], ["play", str(HOLES_DIR / "straight.yaml")],
+                 ["render", "meadow", "1", "--out", str(tmp_path / "x.png")]):
+        for theme in ("", "nope"):
+            result = run(*args, "--theme", theme)
+            assert result.returncode == 2, (args, theme, result.stderr)
+            assert result.stderr.startswith(f"polygolf: no theme {theme!r}; themes: grass")
+            assert len(result.stderr.splitlines()) == 1
+    assert not (tmp_path / "x.png").exists()
+
+
+def test_render_takes_a_holes_name_as_par_and_explain_do(tmp_path):
+    by_number, by_name = tmp_path / "9.png", tmp_path / "castle.png"
+    assert run("render", "meadow", "9", "--out", str(by_number)).returncode == 0
+    result = run("render", "Meadow", "castle", "--out", str(by_name))
+    assert (result.returncode, result.stdout) == (0, f"{by_name}\n"), result.stderr
+    assert np.array_equal(np.asarray(Image.open(by_number)), np.asarray(Image.open(by_name)))
+    result = run("render", "meadow", "castel", "--out", str(tmp_path / "x.png"))
+    assert result.returncode == 2 and result.stderr == (
+        "polygolf: meadow has holes 1 to 9 (or give a hole's name: straight, dog-leg, zig-zag, obstacle-field, "
+        "narrow-gates, long-way, u-turn, pinball, castle)\n")
+    result = run("render", "random-nine", "castle", "--out", str(tmp_path / "x.png"))
+    assert (result.returncode, result.stderr) == (2, "polygolf: random-nine has holes 1 to 9: give a number, not "
+                                                     "'castle'\n")

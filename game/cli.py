@@ -80,17 +80,23 @@ def players_arg(text: str) -> int:
 
 
 def names_arg(text: str) -> list[str]:
-    from polygolf.game.session import MAX_PLAYERS
+    """The players' names, each held to the rules the names screen holds them to (`session.player_name`:
+    those of a course's name, and Unicode's composed form, so 'Ánn' typed either way is one name)."""
+    from polygolf.game.session import MAX_NAME, MAX_PLAYERS, player_name
 
     names = [name.strip() for name in text.split(",")]
-    if not 1 <= len(names) <= MAX_PLAYERS or not all(names) or any(len(n) > 20 for n in names):
-        raise argparse.ArgumentTypeError(f"{text!r}: give 1 to {MAX_PLAYERS} names of 1 to 20 characters, "
+    if not 1 <= len(names) <= MAX_PLAYERS or not all(names):
+        raise argparse.ArgumentTypeError(f"{text!r}: give 1 to {MAX_PLAYERS} names of 1 to {MAX_NAME} characters, "
                                          "separated by commas")
-    if not all(name.isprintable() for name in names):  # (bytes that are not UTF-8 come as unprintable escapes)
-        raise argparse.ArgumentTypeError(f"{text!r}: names are printable text (no control characters; UTF-8)")
-    if len(set(names)) != len(names):
+    taken = []
+    for name in names:
+        try:
+            taken.append(player_name(name))
+        except ValueError as exc:
+            raise argparse.ArgumentTypeError(f"{name!r}: {exc}") from None
+    if len(set(taken)) != len(taken):
         raise argparse.ArgumentTypeError(f"{text!r}: every player needs a different name")
-    return names
+    return taken
 
 
 def player_names(players: int | None, names: list[str] | None) -> list[str] | None:

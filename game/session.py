@@ -2,16 +2,20 @@
 
 from __future__ import annotations
 
+import unicodedata
 from collections.abc import Callable, Collection
 from dataclasses import dataclass, field
 from datetime import datetime, timezone
 from pathlib import Path
+
+from pydantic import TypeAdapter, ValidationError
 
 from polygolf import __version__
 from polygolf.engine.golf.holes import Course, Hole, load_all_courses
 from polygolf.engine.golf.nine import COURSE_ID as RANDOM_NINE
 from polygolf.engine.golf.nine import load_nine, new_seed
 from polygolf.engine.golf.play import HolePlay
+from polygolf.engine.loading.limits import Name
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.engine.physics.polygon import Vec
@@ -68,6 +72,28 @@ def is_computer(name: str) -> bool:
     a name, so the HUD, scorecard, bests and replays all say who played without anything new."""
     words = name.split()
     return bool(words) and words[0].lower() == COMPUTER.lower()
+
+
+MAX_NAME = 20  # characters of a player's name
+_CONTENT_NAME = TypeAdapter(Name)  # the rules every name in the content follows (a course's, a hole's)
+
+
+def player_name(text: str) -> str:
+    """`text` as a player's name, or a ValueError saying why it cannot be one. The name is taken in
+    Unicode's composed form (NFC), so 'Ánn' typed as one character or as 'A' and an accent is one
+    player, and is held to the rules a course's name is (`limits.Name`: no control characters or
+    direction overrides, no spaces about it, something in it that shows: a name of accents alone is
+    none), printable text and at most MAX_NAME characters."""
+    name = unicodedata.normalize("NFC", text)
+    if not name.isprintable():  # (bytes that are not UTF-8 come as unprintable escapes)
+        raise ValueError("a name is printable text (no control characters; UTF-8)")
+    try:
+        _CONTENT_NAME.validate_python(name)
+    except ValidationError as exc:
+        raise ValueError(exc.errors(include_url=False)[0]["msg"].removeprefix("Value error, ")) from None
+    if len(name) > MAX_NAME:
+        raise ValueError(f"a name is at most {MAX_NAME} characters")
+    return name
 
 
 def escaped(text: str) -> str:
@@ -468,9 +494,13 @@ class Game:
             except ValueError:
                 pass
         names = saved.get("players")
-        if isinstance(names, list) and 1 <= len(names) <= MAX_PLAYERS and all(
-                isinstance(n, str) and n.strip() and n.isprintable() for n in names):
-            self.players = [n.strip()[:20] for n in names]
+        if isinstance(names, list) and 1 <= len(names) <= MAX_PLAYERS and all(isinstance(n, str) for n in names):
+            try:
+                names = [player_name(n.strip()[:MAX_NAME]) for n in names]
+            except ValueError:
+                names = []  # (edited by hand to a name the game would not take: the default)
+            if names and len(set(names)) == len(names):
+                self.players = names
         volume = saved.get("volume")
         if isinstance(volume, int | float) and 0.0 <= volume <= 1.0:
             self.sound.volume = float(volume)  # the sound board's volume is the one setting

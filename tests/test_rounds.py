@@ -766,3 +766,28 @@ def test_scores_on_the_fresh_database_that_replaced_a_damaged_one_has_no_rounds_
     assert len(list(data_dir().glob("polygolf.db.corrupt-*"))) == 1
     (data_dir() / "polygolf.db").write_bytes(b"\x00garbage again\xff" * 200)
     assert main(["scores", "--json"]) == 0 and capsys.readouterr().out == "[]\n"
+
+
+@pytest.mark.parametrize(("names", "why"), [
+    ("\u0301\u0301", "a name needs a letter, digit or sign that shows"),  # accents alone: invisible
+    ("Ann,\u200b", "printable"),  # a zero-width space alone
+    ("A\u0301nn,\u00c1nn", "every player needs a different name"),  # one name, typed two ways
+    (" \u00c1nn , Bob,A\u0301nn", "every player needs a different name"),  # (spaces about it are no part)
+    ("Abcdefghijklmnopqrstu", "at most 20 characters"),
+])
+def test_player_names_follow_the_rules_of_a_courses_name(names, why, capsys):
+    assert autoplay("--names", names) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("polygolf: --names: ") and why in err[0], err
+
+
+def test_player_names_are_kept_in_composed_form():
+    from polygolf.game.cli import names_arg
+
+    assert names_arg("A\u0301nn,Bo\u0308b") == ["\u00c1nn", "B\u00f6b"]  # 'Ánn', 'Böb' as one character each
+    assert names_arg("Abcdefghijklmnopqrs\u0301") == ["Abcdefghijklmnopqr\u015b"]  # 20 typed, 19 composed
+    store = Store(echo=False)
+    for saved, taken in ((["A\u0301nn", "Bob"], ["\u00c1nn", "Bob"]), (["A\u0301nn", "\u00c1nn"], ["Player 1"]),
+                         (["\u0301", "Bob"], ["Player 1"])):
+        assert store.save_settings({"players": saved})
+        assert Game.load().players == taken, saved

@@ -328,6 +328,17 @@ def test_screens_keep_long_names_and_scores_inside_their_places(window, size, sh
     window.dispatch_events()
 
 
+def test_names_typed_two_ways_are_one_name_and_a_name_that_shows_nothing_is_none():
+    """'Ánn' typed as one character or as A and an accent is one player (numbered as a repeat), and
+    a name of accents alone (it shows nothing) keeps its seat's default, as an empty box does."""
+    from types import SimpleNamespace
+
+    from polygolf.game.views.names import NamesView
+
+    boxes = [SimpleNamespace(text=text) for text in ("\u00c1nn", "A\u0301nn", "\u0301\u0301", " \u200b ")]
+    assert NamesView.names(SimpleNamespace(boxes=boxes)) == ["\u00c1nn", "\u00c1nn 2", "Player 3", "Player 4"]
+
+
 def test_a_course_with_no_playable_hole_shows_its_problem_in_the_menu_and_starts_no_round(window):  # noqa: F811
     """QA: Play on a course whose every hole is unreadable went straight to an empty scorecard."""
     from polygolf.game.views.menu import MenuView

@@ -1,5 +1,6 @@
 """The players' names, one box each (the count is the menu's Players choice). Enter or Done keeps
-them (an empty box keeps its default, a repeated name is numbered); Esc leaves them as they were.
+them (an empty box keeps its default, as does a name the rules of names refuse; a repeated name is
+numbered); Esc leaves them as they were.
 Tab moves to the next box, Shift+Tab back; F11 works here as everywhere (M is a letter in a name).
 
 A player named CPU is the computer (`session.is_computer`): each row's Computer button names its
@@ -7,16 +8,17 @@ seat so (or gives it back a person's name), and the Computer plays button sets h
 
 from __future__ import annotations
 
+import unicodedata
+
 import arcade
 from arcade.gui import UIAnchorLayout, UIBoxLayout, UIFlatButton, UILabel, UIView
 from arcade.gui.experimental.restricted_input import UIRestrictedInput
 
 from polygolf.game.drawing import player_colour
-from polygolf.game.session import Game, is_computer
+from polygolf.game.session import MAX_NAME, Game, is_computer, player_name
 from polygolf.game.views.navigation import Navigator, window_key
 from polygolf.game.views.widgets import themed_button, title
 
-MAX_NAME = 20
 ROW_HEIGHT = (32, 40)  # px: a row's height, in the shortest window and where there is room
 ROW_GAP = (6, 14)  # px between rows: when rows would be under 36 px, and otherwise
 MARGIN = 10  # px
@@ -111,10 +113,17 @@ class NamesView(UIView):
         self.lay_out(width, height)
 
     def names(self) -> list[str]:
-        """The boxes' names, tidied: trimmed to MAX_NAME, empty ones and repeats given defaults."""
+        """The boxes' names, tidied: in Unicode's composed form (NFC: 'Ánn' typed either way is one
+        name), trimmed to MAX_NAME; an empty box, or a name the rules refuse (`session.player_name`,
+        a course's name's rules: one of accents alone shows nothing), gets its seat's default, and a
+        repeat a number."""
         out: list[str] = []
         for seat, box in enumerate(self.boxes):
-            name = " ".join(box.text.split())[:MAX_NAME] or f"Player {seat + 1}"
+            name = unicodedata.normalize("NFC", " ".join(box.text.split()))[:MAX_NAME].rstrip()
+            try:
+                name = player_name(name)
+            except ValueError:
+                name = f"Player {seat + 1}"
             number, base = seat + 1, name
             while name in out:  # a repeat: numbered, cut to leave the number room (never the same again)
                 suffix = f" {number}"

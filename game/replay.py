@@ -1,6 +1,8 @@
 """Replays: a recorded round (`record.RoundRecord`) played again by the same session code that played
 it (`session.RoundPlay` fed with its inputs), shown in a window or checked headless: `verify` passes
-only if every hole ends with every ball's strokes, flags and body state bit for bit as recorded."""
+only if every hole ends with every ball's strokes, flags and body state bit for bit as recorded, and
+every recorded input is one live play could have taken where it stands (none after the hole ended, no
+shot while a ball still moved: the recorder writes no such)."""
 
 from __future__ import annotations
 
@@ -62,6 +64,15 @@ def verify(record: RoundRecord, course: Course) -> Iterator[tuple[str, bool]]:
             while session.ended is None and session.frame <= recorded.frames + SLACK_FRAMES:
                 session.step()
             ended = session.ended
+            # Inputs live play could never have recorded (after the hole ended, a second shot while the
+            # balls still moved...) are no part of the round, even where the end is the same without them.
+            bogus = session.refused + [f"the {i.kind} at frame {i.frame}: after the hole ended (frame {ended.frames})"
+                                       for i in (session.unplayed if ended is not None else [])]
+            if bogus:
+                more = f"; and {len(bogus) - 1:,} more" if len(bogus) > 1 else ""
+                yield (f"{label}: {len(bogus):,} of {len(recorded.inputs):,} recorded inputs could never have been "
+                       f"taken ({bogus[0]}{more})", False)
+                break
             if ended is None:
                 yield (f"{label}: not finished {SLACK_FRAMES} frames after its recorded end "
                        f"(frame {recorded.frames})", False)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import unicodedata
+from collections import deque
 from collections.abc import Callable, Collection
 from dataclasses import dataclass, field
 from datetime import datetime, timezone
@@ -233,7 +234,9 @@ class RoundPlay:
             shape_label=shape_label, shape=shape, preset=preset, players=list(round_.players),
             start_at=round_.position)
         self._inputs: list[Input] = []
-        self._pending: list[Input] = []
+        self._pending: deque[Input] = deque()
+        # A replay's inputs that could never have been taken, this hole: why, each (see `_feed`).
+        self.refused: list[str] = []
         self.hole_preset = preset  # the preset the hole being played started with
         self.start_hole()
 
@@ -263,9 +266,25 @@ class RoundPlay:
     @property
     def can_shoot(self) -> bool:
         """The player whose turn it is may shoot: everything is at rest and their ball is in play."""
+        return self.feed is None and self._refusal("shot", self.turn) is None
+
+    def _refusal(self, kind: str, player: int) -> str | None:
+        """Why `player` may not give an input of `kind` now (None: they may): the rules live play
+        records inputs by (`shoot`, `restart`), which a replay's inputs are held to as they come."""
         hole = self.hole
-        return (hole is not None and self.feed is None and self.waiting is None and not hole.state.finished
-                and hole.all_at_rest)
+        if hole is None or self.ended is not None:
+            return "after the hole ended"
+        if kind == "preset":
+            return None
+        if player != hole.turn:
+            return f"not {self.players[player]}'s turn but {self.players[hole.turn]}'s"
+        if hole.state.finished:
+            return "that ball had finished the hole"
+        if kind == "shot" and not hole.all_at_rest:
+            return "a ball was still moving"
+        if kind == "shot" and self.waiting is not None:
+            return "a shot was taken in this frame already"
+        return None
 
     @property
     def inputs(self) -> list[Input]:
@@ -283,10 +302,10 @@ class RoundPlay:
         hole = self.round.current()
         if hole is None:
             return None
-        self._pending = []
+        self._pending, self.refused = deque(), []
         if self.feed is not None:
             self.preset, pending = self.feed.get(self.round.position, (self.preset, []))
-            self._pending = list(pending)
+            self._pending = deque(pending)
         self.hole = HolePlay(hole, self.shape, self.preset, len(self.players))
         self.frame, self.waiting, self.ended = 0, None, None
         self._inputs = []
@@ -305,7 +324,7 @@ class RoundPlay:
 
     def restart(self) -> bool:
         """The player whose turn it is goes back to the tee: strokes kept, a penalty stroke added."""
-        if self.hole is None or self.feed is not None or self.hole.state.finished:
+        if self.feed is not None or self._refusal("restart", self.turn) is not None:
             return False
         return self._apply(Input(frame=self.frame, kind="restart", player=self.turn))
 
@@ -346,7 +365,7 @@ class RoundPlay:
             return
         for _ in range(frames):
             while self._pending and self._pending[0].frame <= self.frame and self.ended is None:
-                self._apply(self._pending.pop(0))
+                self._feed(self._pending.popleft())
             hole.step(profile=profile)
             if self.ended is not None:
                 continue
@@ -354,6 +373,21 @@ class RoundPlay:
             self._next_turn()
             if hole.finished:
                 self.ended = self._hole_record()
+
+    def _feed(self, action: Input) -> None:
+        """A replay's input, at its frame: taken only if live play could have taken it there (it
+        records no other), else passed over and said in `refused` (`replay.verify` fails on it)."""
+        why = (f"out of frame order (frame {self.frame} was reached first)" if action.frame != self.frame
+               else self._refusal(action.kind, action.player))
+        if why is None and not self._apply(action):
+            why = "too short to be a shot" if action.kind == "shot" else "not taken"
+        if why is not None:
+            self.refused.append(f"the {action.kind} at frame {action.frame}: {why}")
+
+    @property
+    def unplayed(self) -> list[Input]:
+        """A replay's inputs for this hole still to come: once it has ended, inputs it never reached."""
+        return list(self._pending)
 
     def _next_turn(self) -> None:
         """Strict rotation: when everything rests after a shot, the next seat whose ball is in play."""

@@ -791,3 +791,44 @@ def test_player_names_are_kept_in_composed_form():
                          (["\u0301", "Bob"], ["Player 1"])):
         assert store.save_settings({"players": saved})
         assert Game.load().players == taken, saved
+
+
+def _verify_with_inputs(tmp_path, capsys, edit) -> str:
+    """`replay --verify` of the round `autoplay` recorded, with hole 1's inputs as `edit(inputs, end
+    frame)` makes them: its output (exit 1 asserted)."""
+    path = next((data_dir() / "replays").glob("*.json"))
+    data = json.loads(path.read_text())
+    data["holes"][0]["inputs"] = edit(data["holes"][0]["inputs"], data["holes"][0]["frames"])
+    tampered = tmp_path / "tampered.json"
+    tampered.write_text(json.dumps(data))
+    capsys.readouterr()
+    assert main(["replay", str(tampered), "--verify"]) == 1
+    out = capsys.readouterr().out.splitlines()
+    assert out[-1] == f"{tampered}: does NOT match: 1 of 3 holes simulated again", out
+    return out[0]
+
+
+def test_a_replay_with_inputs_live_play_could_never_have_taken_fails_verify(tmp_path, capsys):
+    """QA's replay added 20,000 shots to hole 1, at frames 0 to 19,999 (it ends at frame 137): they
+    were passed over in silence and the round verified 'identical', exit 0."""
+    assert autoplay() == 0
+    path = next((data_dir() / "replays").glob("*.json"))
+    capsys.readouterr()
+    assert main(["replay", str(path), "--verify"]) == 0  # (as recorded)
+    data = json.loads(path.read_text())
+    shot, = data["holes"][0]["inputs"]
+    end = data["holes"][0]["frames"]
+    assert shot["frame"] == 0 and shot["kind"] == "shot" and 60 < end < 1000
+
+    line = _verify_with_inputs(tmp_path, capsys, lambda inputs, end: [dict(shot, frame=k) for k in range(20_000)])
+    assert line == ("hole 1 warm-up: 19,999 of 20,000 recorded inputs could never have been taken (the shot at "
+                    "frame 1: a ball was still moving; and 19,998 more)")
+    line = _verify_with_inputs(tmp_path, capsys, lambda inputs, end: inputs + [dict(shot, frame=end + 5)])
+    assert line == (f"hole 1 warm-up: 1 of 2 recorded inputs could never have been taken (the shot at frame "
+                    f"{end + 5}: after the hole ended (frame {end}))")
+    line = _verify_with_inputs(tmp_path, capsys, lambda inputs, end: inputs + [{"frame": end, "kind": "restart"}])
+    assert line.endswith(f"(the restart at frame {end}: after the hole ended (frame {end}))")
+    line = _verify_with_inputs(tmp_path, capsys, lambda inputs, end: inputs * 2)
+    assert line.endswith("(the shot at frame 0: a shot was taken in this frame already)")
+    line = _verify_with_inputs(tmp_path, capsys, lambda inputs, end: [dict(shot, frame=5), shot])
+    assert line.endswith("(the shot at frame 0: out of frame order (frame 5 was reached first))")

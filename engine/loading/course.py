@@ -191,8 +191,8 @@ def load_library(path: str | Path | None = None) -> TileLibrary:
 def _wide_gates(borders: BorderSet, size: float, loc: Loc) -> list[tuple[Loc, str]]:
     """A gate as wide as the tile's side or wider, where and why: it would leave no wall either side
     of it, an open side that says it is a gate."""
-    return [((*loc, side, "gate"), f"a gate {gate.gate:g} m wide on a {size:g} m tile leaves no wall either side of it: "
-                                   f"make it narrower than {size:g} m, or the side open")
+    return [((*loc, side, "gate"), f"a gate {gate.gate:g} m wide on a {size:g} m tile leaves no wall either side of "
+                                   f"it: make it narrower than {size:g} m, or the side open")
             for side in SIDES if isinstance(gate := getattr(borders, side), Gate) and gate.gate >= size]
 
 

@@ -201,6 +201,9 @@ def _validate(args: argparse.Namespace) -> int:
     from polygolf.game.tools.validate import validate_paths
 
     count, problems = validate_paths(args.paths or content_roots())
+    if args.paths and not count:  # (a folder with no content in it: the wrong folder, not a clean one)
+        print(f"polygolf: validate: no content files (*.yaml) in {', '.join(args.paths)}", file=sys.stderr)
+        return EXIT_CONTENT
     if not args.paths:  # (the player's folders that are files: nothing in them was checked)
         problems = misplaced_folders("", "holes", "themes", "scenes") + problems
     for problem in problems:
@@ -369,7 +372,7 @@ def _generate(args: argparse.Namespace) -> int:
         print(f"polygolf: --out: cannot write {out}: {exc.strerror or exc}", file=sys.stderr)
         return EXIT_CONTENT
     if kept is not None:
-        print(f"polygolf: {out} held another hole: it is kept as {kept}", file=sys.stderr)
+        print(f"polygolf: {out} held other text: it is kept as {kept}", file=sys.stderr)
     problems = check_file(out)
     for problem in problems:
         print(problem, file=sys.stderr)

@@ -122,6 +122,14 @@ def test_validate_passes_on_shipped_content_and_fails_on_broken(tmp_path, capsys
     assert err[1:] == [f"{bad / 'ugly.yaml'}:1: {name}: missing (required)" for name in missing]
 
 
+def test_validate_of_a_folder_without_content_says_so(tmp_path, capsys):
+    """Not "0 files checked, 0 problems" and success: the wrong folder was given (QA: /root)."""
+    (tmp_path / "notes.txt").write_text("no yaml here\n")
+    assert main(["validate", str(tmp_path)]) == 2
+    out, err = capsys.readouterr()
+    assert err.strip() == f"polygolf: validate: no content files (*.yaml) in {tmp_path}" and out == ""
+
+
 def test_a_reader_that_goes_away_is_no_traceback():
     """`polygolf simulate ... | head -c 0`: the pipe closes early; the command stops quietly."""
     scene = ROOT_SCENES / "flat-wall.yaml"

@@ -227,7 +227,7 @@ def test_generate_over_an_authors_file_keeps_it_as_bak(tmp_path, monkeypatch, ca
     assert main(["generate", "--seed", "77", "--out", str(out)]) == 0
     assert (tmp_path / "mine.yaml.bak").read_text() == "name: My own\n"
     assert capsys.readouterr().err.strip().splitlines()[-1] == \
-        f"polygolf: {out} held another hole: it is kept as {out}.bak"
+        f"polygolf: {out} held other text: it is kept as {out}.bak"
     made = out.read_text()
     assert main(["generate", "--seed", "77", "--out", str(out)]) == 0  # the same text again: nothing to keep
     assert "kept as" not in capsys.readouterr().err

@@ -138,6 +138,7 @@ def test_restart_keeps_the_strokes_and_adds_a_penalty_stroke(window, shots_dir):
     assert (world.state.strokes, world.state.penalties, world.state.score) == (1, 1, 2)
     assert (world.ball.x, world.ball.y) == tee and world.ball_at_rest
     assert play.hud_texts["strokes"].text == "2 strokes (+1 penalty stroke)"
+    assert play.splashes == []  # (no water's rings at the tee: QA)
     assert_not_blank(snapshot(window, shots_dir, "play-restart-penalty"), "play")
     key(window, arcade.key.ESCAPE)
     pause = window.current_view

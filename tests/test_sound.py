@@ -94,6 +94,27 @@ def test_water_plays_the_splash(courses):
         world.close()
 
 
+def test_a_restart_costs_a_stroke_but_splashes_nothing(courses):
+    """Back to the tee is a penalty stroke, as water is, but not water's splash (QA: R on a dry hole
+    played it). A restart mid-roll, then one at rest."""
+    world = HolePlay(hole(courses, "meadow", 1), SQUARE)
+    try:
+        player = RecordingPlayer()
+        board = SoundBoard(player)
+        world.shoot((world.ball.x, world.ball.y), (0.0, 1.0))
+        for _ in range(10):
+            world.step()
+            board.hear(*world.drain_events())
+        for _ in range(2):
+            assert world.restart_ball()
+            world.step()
+            board.hear(*world.drain_events())
+        assert (world.state.strokes, world.state.penalties) == (1, 2)
+        assert player.volumes("splash") == [] and len(player.volumes("hit")) == 1
+    finally:
+        world.close()
+
+
 def test_a_bumper_plays_boing_and_a_wall_knocks(courses):
     world = HolePlay(hole(courses, "hazards", 5), SQUARE)  # Pinball Wizard
     try:

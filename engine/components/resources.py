@@ -284,7 +284,8 @@ class Impact:
 @dataclass(slots=True)
 class Events:
     """Golf events of this substep, in the order they happened, each naming the ball it happened to:
-    ("shot", ball, 1), ("holed", ball, 1), ("penalty", ball, strokes). The scoring stage, last in the
+    ("shot", ball, 1), ("holed", ball, 1), ("penalty", ball, strokes) (water), ("restart", ball, strokes)
+    (back to the tee: a penalty too, but no splash). The scoring stage, last in the
     table, reads `fired` and clears it; a ball's own `HoleState` keeps its score (one per player).
 
     A listener outside the world (the front end's sound and drawing) reads `heard` and `impacts`

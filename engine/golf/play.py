@@ -159,7 +159,7 @@ class HolePlay:
         player.shot.withdraw()  # a shot released this frame is not taken from the tee
         self.place_ball(*self._free_spot(player))
         player.body.angle = 0.0
-        self.sim.res.events.emit("penalty", player.entity, RESTART_PENALTY)
+        self.sim.res.events.emit("restart", player.entity, RESTART_PENALTY)
         return True
 
     def _free_spot(self, player: PlayerBall) -> tuple[float, float]:

@@ -45,7 +45,7 @@ class ScoringProcessor(esper.Processor):
             if kind == "shot":
                 hole.strokes += 1
                 self._shooter = ent
-            elif kind == "penalty":
+            elif kind in ("penalty", "restart"):  # (water's, or the player's own back to the tee)
                 hole.penalties += amount
             elif kind == "holed":
                 hole.holed = True

@@ -404,9 +404,11 @@ class PlayView(arcade.View):
                 continue
             if kind == "holed":
                 self.drop_seat, self.drop_from, self.drop_time = seat, self.ball_poses[seat].previous, 0.0
-            elif kind == "penalty":
+            elif kind == "penalty":  # water: rings where it went in
                 x, y, _ = self.ball_poses[seat].previous
                 self.splashes.append([x, y, 0.0])
+                self.trail.clear()
+            elif kind == "restart":  # back to the tee: nothing splashed
                 self.trail.clear()
 
     def animate(self, delta_time: float) -> None:

@@ -99,10 +99,12 @@ def test_the_computer_shows_its_arrow_then_shoots_like_a_player(window, shots_di
                   seen=lambda v: thinking.append("thinking…" in v.hud_texts["strokes"].text))
         assert any(thinking)
         assert_not_blank(snapshot(window, shots_dir, "play-computer-turn"), "play")
-        # A player's press does nothing on the computer's turn.
+        # A player's press does nothing on the computer's turn; R says why it does nothing.
         send(window, "on_mouse_press", *play.camera.project((world.ball.x, world.ball.y))[:2],
                               arcade.MOUSE_BUTTON_LEFT, 0)
         assert not play.aiming
+        send(window, "on_key_press", arcade.key.R, 0)
+        assert play.banner.text == "The computer's ball is the computer's to restart" and world.state.penalties == 0
         run_until(play, lambda: len(play.session.inputs) == 2, 5)
         shot = play.session.inputs[-1]
         assert (shot.kind, shot.player) == ("shot", 1)  # recorded like any shot

@@ -146,7 +146,8 @@ class PlayView(arcade.View):
         """R, or Restart hole: the ball whose turn it is goes back to the tee; the strokes taken stay
         and a penalty stroke is added (no free retakes)."""
         if self.session.computer_turn:
-            return  # the computer's ball is the computer's to restart
+            self.show_banner("The computer's ball is the computer's to restart", 2.0)
+            return
         if self.session.restart():
             self.aiming = False
             seat = self.world.turn

@@ -165,6 +165,15 @@ def test_l_shows_the_last_shot_again_and_returns_to_the_hole(window, shots_dir):
     replay = window.current_view
     assert isinstance(replay, ReplayView) and replay.title == "Player 2's last shot"
     assert replay.session.frame == play.session.last_shot().frame  # the frames before were simulated unseen
+    # Game time as played at any frame rate (QA: a frame a window update, 2.4x fast at 144 Hz).
+    start = replay.session.frame
+    replay.on_update(1 / 20)
+    replay.on_update(1 / 144)  # (not yet a whole frame: none; the rest waits)
+    assert replay.session.frame == start + 3
+    replay.fast = True
+    replay.on_update(1 / 60 - 1 / 144)
+    assert replay.session.frame == start + 7
+    replay.fast = False
     for _ in range(20):
         frame(window)
     assert_not_blank(snapshot(window, shots_dir, "replay-last-shot"), "replay")

@@ -13,6 +13,7 @@ import arcade
 
 from polygolf.game.drawing import HUD_HEIGHT, HoleArt, PlayerBallArt, fit_camera, fit_width
 from polygolf.game.session import Game, RoundPlay, strokes_text
+from polygolf.game.timing import FixedStep
 from polygolf.game.views.navigation import window_key
 
 END_PAUSE = 1.0  # s the last picture stays before the next hole or the end
@@ -33,6 +34,7 @@ class ReplayView(arcade.View):
         self.title = title
         self.last_frame = last_frame
         self.fast = False
+        self.clock = FixedStep()  # game time as played, at any frame rate (as the play view's)
         self.done_for = 0.0
         self.ended = False
         self.camera = arcade.Camera2D()
@@ -97,7 +99,10 @@ class ReplayView(arcade.View):
         if session.hole is None or self.ended:
             return
         if not self.at_end():
-            session.step(4 if self.fast else 1)
+            for _ in range(self.clock.advance(delta_time) * (4 if self.fast else 1)):
+                session.step(1)
+                if self.at_end():
+                    break
             self.game.sound.hear(*session.hole.drain_events(), delta_time)  # it sounds as it did when played
             if self.last_frame is None and session.frame > self.last_input_frame() + OVERRUN:
                 self.message_text = "This replay is out of step with the game"

@@ -195,7 +195,7 @@ def run_replay(path: Path) -> None:
     record, course = load_for_replay(path)
     game = Game.load()
     game.shape_label, game.shape = record.shape_label, record.shape  # for this replay only, not saved
-    game.courses, game.course_index = [course], 0
+    game.show_course(course)  # (the menu after it still offers every course)
     session = replay_session(record, course)
     game.round, game.session = session.round, session
     flow = ScreenFlow(make_window(), game)

@@ -586,6 +586,17 @@ class Game:
             self.random_nine = self._cached_nine()
         self.save_settings("course")
 
+    def show_course(self, course: Course) -> None:
+        """`course` chosen for now (a replay's, as the content has it now): one of the content's courses,
+        or a Random nine of its seed; not saved as the menu's choice, and every course stays on offer."""
+        ids = [c.id for c in self.courses]
+        if course.id in ids:
+            self.course_index = ids.index(course.id)
+            self.courses[self.course_index] = course
+        else:  # a Random nine (`replay.load_for_replay` finds no other course outside the content)
+            self.course_index = len(self.courses)
+            self.random_seed, self.random_nine = int(course.id.removeprefix(f"{RANDOM_NINE}-")), course
+
     def choose_random_nine(self, seed: int | None = None) -> None:
         """Random nine of `seed` (default: the seed chosen last), from the data folder if built before.
         (The command line's choice: not saved as the menu's.)"""

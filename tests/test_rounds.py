@@ -832,3 +832,20 @@ def test_a_replay_with_inputs_live_play_could_never_have_taken_fails_verify(tmp_
     assert line.endswith("(the shot at frame 0: a shot was taken in this frame already)")
     line = _verify_with_inputs(tmp_path, capsys, lambda inputs, end: [dict(shot, frame=5), shot])
     assert line.endswith("(the shot at frame 0: out of frame order (frame 5 was reached first))")
+
+
+def test_a_replay_s_course_is_chosen_for_now_and_every_course_stays_on_offer():
+    """`polygolf replay` chooses the replay's course for the menu after it (Play again plays it), but
+    leaves every course and Random nine to choose (QA: the Course button then offered only it)."""
+    from polygolf.engine.golf.holes import Course
+
+    game = Game.load(Store(echo=False))
+    offered = [c.id for c in game.courses]
+    game.show_course(game.courses[1])
+    assert [c.id for c in game.courses] == offered and game.course is game.courses[1]
+    nine = Course("random-nine-4711", "Random nine #4711", [])
+    game.show_course(nine)
+    assert [c.id for c in game.courses] == offered and game.random_chosen and game.course is nine
+    assert game.random_seed == 4711 and game.course_label == "Random nine #4711"
+    game.next_course()
+    assert game.course is game.courses[0]

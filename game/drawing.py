@@ -380,20 +380,43 @@ def fit_camera(camera: arcade.Camera2D, bounds: tuple[float, float, float, float
 
 # Seats 2 to 4 take the first of these that is not too like the theme's ball (seat 1's colour) or an
 # earlier seat's: Sand's blue ball would otherwise share seat 2's blue, Night's pink one seat 3's red.
+# And, while there are enough, one lighter or darker than both of the green's shades: a red ball as
+# light as Grass's green (1.04 : 1) is told from it by hue alone, which a red-green blind player lacks.
 SEAT_COLOURS: tuple[RGBA, ...] = ((79, 195, 247, 255), (239, 83, 80, 255), (186, 104, 200, 255),
-                                  (255, 167, 38, 255), (245, 245, 245, 255))
+                                  (255, 167, 38, 255), (245, 245, 245, 255), (26, 35, 126, 255), (183, 28, 28, 255))
 SEAT_DISTANCE = 70.0  # RGB distance under which two balls are taken for one (as tests/test_theme_colours)
+SEAT_CONTRAST = 1.5  # lightness contrast (WCAG's ratio) a seat's ball keeps from both greens, where it can
+
+
+def lightness(rgb: Sequence[int]) -> float:
+    """WCAG relative luminance, 0 (black) to 1 (white)."""
+    def linear(c: int) -> float:
+        c /= 255
+        return c / 12.92 if c <= 0.03928 else ((c + 0.055) / 1.055) ** 2.4
+
+    r, g, b = (linear(c) for c in rgb[:3])
+    return 0.2126 * r + 0.7152 * g + 0.0722 * b
+
+
+def contrast(a: Sequence[int], b: Sequence[int]) -> float:
+    """WCAG's contrast ratio of two colours' lightness, 1 (the same) to 21 (black on white)."""
+    light, dark = sorted((lightness(a), lightness(b)), reverse=True)
+    return (light + 0.05) / (dark + 0.05)
 
 
 def player_colour(theme: Theme, seat: int) -> RGBA:
     """The colour of seat `seat`'s ball (0-based): seat 0 the theme's ball, the others each a colour
-    of their own, far enough from the ball's and from each other's to tell apart on the green."""
+    of their own, far enough from the ball's and from each other's to tell apart, and lighter or
+    darker than the green where four such colours can be found."""
+    greens = (theme.rgba("green"), theme.rgba("green_alt"))
     taken = [theme.rgba("ball")]
-    for colour in SEAT_COLOURS:
-        if len(taken) > seat:
-            break
-        if all(math.dist(colour[:3], other[:3]) >= SEAT_DISTANCE for other in taken):
-            taken.append(colour)
+    for light_enough in (True, False):
+        for colour in SEAT_COLOURS:
+            if len(taken) > seat:
+                return taken[seat]
+            if colour not in taken and all(math.dist(colour[:3], other[:3]) >= SEAT_DISTANCE for other in taken) \
+                    and (not light_enough or min(contrast(colour, green) for green in greens) >= SEAT_CONTRAST):
+                taken.append(colour)
     return taken[seat] if seat < len(taken) else SEAT_COLOURS[seat % len(SEAT_COLOURS)]
 
 

@@ -11,7 +11,7 @@ import time
 import arcade
 import pytest
 
-from polygolf.game.drawing import player_colour
+from polygolf.game.drawing import contrast, player_colour
 from polygolf.game.flow import ScreenFlow
 from polygolf.game.session import Game, Round
 from polygolf.game.theme import load_themes
@@ -25,7 +25,6 @@ from polygolf.game.views.replay import ReplayView
 from polygolf.game.views.results import ResultsView
 
 from .test_screens import assert_not_blank, click, key, send, shots_dir, snapshot, window  # noqa: F401
-from .test_theme_colours import lightness
 
 SMALL = [(640, 400), (800, 600)]
 LONG_NAMES = ["Wilhelmina Wadsworth", "WWWWWWWWWWWWWWWWWWWW", "CPU", "Maximilian Mortimore"]
@@ -336,11 +335,27 @@ def test_every_seat_has_a_ball_colour_of_its_own(theme):
     for i, a in enumerate(colours):
         for b in colours[i + 1:]:
             assert math.dist(a[:3], b[:3]) >= 70, (theme.name, a, b)
+    # Seats 2-4 lighter or darker than both greens, not only another hue (QA: Grass's red, 1.04 : 1).
+    for colour in colours[1:]:
+        assert min(contrast(colour, theme.rgba(green)) for green in ("green", "green_alt")) >= 1.5, (theme.name, colour)
 
 
-def contrast(a, b) -> float:
-    light, dark = sorted((lightness(a), lightness(b)), reverse=True)
-    return (light + 0.05) / (dark + 0.05)
+@pytest.mark.parametrize("theme", THEMES, ids=lambda t: t.name)
+def test_the_names_screen_s_labels_read_on_its_background(window, theme):  # noqa: F811
+    """Each seat's label in its ball's colour only where that reads (QA: Sand's 1.7 : 1), beside a swatch
+    of the ball."""
+    from arcade.gui import UILabel, UISpace
+
+    game = Game.load()
+    game.players = ["Ann", "Bob", "Cy", "Di"]
+    game.theme_index = game.themes.index(next(t for t in game.themes if t.name == theme.name))
+    ScreenFlow(window, game).names()
+    names = window.current_view
+    background = theme.rgba("background")
+    for seat, row in enumerate(names.rows):
+        swatch, label = (w for w in row.children if isinstance(w, UISpace | UILabel))
+        assert tuple(swatch._bg_color)[:3] == player_colour(theme, seat)[:3]
+        assert contrast(tuple(label._label.color), background) >= 3.0, (theme.name, seat, label._label.color)
 
 
 @pytest.mark.parametrize("theme", THEMES, ids=lambda t: t.name)

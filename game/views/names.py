@@ -11,10 +11,10 @@ from __future__ import annotations
 import unicodedata
 
 import arcade
-from arcade.gui import UIAnchorLayout, UIBoxLayout, UIFlatButton, UILabel, UIView
+from arcade.gui import UIAnchorLayout, UIBoxLayout, UIFlatButton, UILabel, UISpace, UIView
 from arcade.gui.experimental.restricted_input import UIRestrictedInput
 
-from polygolf.game.drawing import player_colour
+from polygolf.game.drawing import contrast, player_colour
 from polygolf.game.session import MAX_NAME, Game, is_computer, player_name
 from polygolf.game.views.navigation import Navigator, window_key
 from polygolf.game.views.widgets import themed_button, title
@@ -23,6 +23,8 @@ ROW_HEIGHT = (32, 40)  # px: a row's height, in the shortest window and where th
 ROW_GAP = (6, 14)  # px between rows: when rows would be under 36 px, and otherwise
 MARGIN = 10  # px
 TALL = 600  # px: a window this high has the large title
+SWATCH = 18  # px: the seat's ball beside its label
+LABEL_CONTRAST = 3.0  # WCAG's least for large text: a label in its ball's colour at least this far from the background
 
 
 class NameBox(UIRestrictedInput):
@@ -55,8 +57,14 @@ class NamesView(UIView):
         self.toggles: list[UIFlatButton] = []  # each row's Person / Computer button
         for seat, name in enumerate(game.players):
             row = UIBoxLayout(vertical=False, space_between=16)
-            row.add(UILabel(text=f"Player {seat + 1}", width=130, font_size=16, text_color=player_colour(theme, seat),
-                            bold=True))
+            # The seat's ball as a swatch (edged in the text's colour, so a dark ball shows on a dark
+            # background), and its label in the ball's colour where that reads on the background, else in
+            # the text's (QA: Sand's seat 2 and 3 at 1.7 : 1).
+            colour = player_colour(theme, seat)
+            readable = contrast(colour, theme.rgba("background")) >= LABEL_CONTRAST
+            row.add(UISpace(width=SWATCH, height=SWATCH, color=colour).with_border(width=2, color=theme.rgba("text")))
+            row.add(UILabel(text=f"Player {seat + 1}", width=130, font_size=16,
+                            text_color=colour if readable else theme.rgba("text"), bold=True))
             box = NameBox(text=name[:MAX_NAME], width=320, height=ROW_HEIGHT[1], font_size=16,
                           text_color=theme.rgba("text"), caret_color=theme.rgba("text"))
             box.with_background(color=theme.rgba("panel"))

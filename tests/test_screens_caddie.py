@@ -93,7 +93,7 @@ def test_the_computer_shows_its_arrow_then_shoots_like_a_player(window, shots_di
         aim(window, play, origin, (arrow[0] * 0.5, arrow[1] * 0.5))  # Ann: short, so the hole goes on
         run_until(play, lambda: play.session.can_shoot, 30)
         assert play.session.computer_turn and play.hud_texts["strokes"].text.startswith("CPU: 0 strokes")
-        assert "Ann 1" in play.hud_texts["players"].text and "CPU 0" in play.hud_texts["players"].text
+        assert "Ann: 1" in play.hud_texts["players"].text and "CPU: 0" in play.hud_texts["players"].text
         thinking = []
         run_until(play, lambda: play.caddie.computer_arrow() is not None and play.caddie.shown > 0.6,
                   seen=lambda v: thinking.append("thinking…" in v.hud_texts["strokes"].text))
@@ -110,7 +110,7 @@ def test_the_computer_shows_its_arrow_then_shoots_like_a_player(window, shots_di
         assert (shot.kind, shot.player) == ("shot", 1)  # recorded like any shot
         run_until(play, lambda: play.session.hole_over or (play.session.can_shoot and not play.session.computer_turn),
                   30)
-        assert "CPU 1" in play.hud_texts["players"].text
+        assert "CPU: 1" in play.hud_texts["players"].text
         snapshot(window, shots_dir, "play-after-computer")
     finally:
         game.close()

@@ -76,7 +76,7 @@ def test_two_players_play_to_the_scorecard_and_see_their_bests_next_round(window
     play = window.current_view
     assert [p.body.asleep for p in play.world.players] == [True, True]
     assert play.hud_texts["strokes"].text == "Player 1: 0 strokes"
-    assert play.hud_texts["players"].text == "Player 1 0  ·  Player 2 0"
+    assert play.hud_texts["players"].text == "Player 1: 0  ·  Player 2: 0"
     assert_not_blank(snapshot(window, shots_dir, "play-two-players"), "play")
     shots: list[tuple[int, int]] = []
     between = play_to(window, lambda v: isinstance(v, BetweenView), shots)
@@ -334,6 +334,7 @@ def test_screens_keep_long_names_and_scores_inside_their_places(window, size, sh
     edges = [_extent(course_text), _extent(hole_text), _extent(strokes_text)]
     assert 0 <= edges[0][0] and edges[0][1] < edges[1][0] and edges[1][1] < edges[2][0] and edges[2][1] <= size[0]
     assert _extent(play.hud_texts["players"])[0] >= 0
+    assert play.hud_texts["players"].text.count(": 0") == 4  # every player's score, names cut instead (QA)
     window.set_size(1280, 720)
     window.dispatch_events()
 

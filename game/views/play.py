@@ -252,14 +252,31 @@ class PlayView(arcade.View):
         centre = w / 2 if left <= w / 2 - half and w / 2 + half <= right else (left + right) / 2
         texts["hole"].x = centre
         panel = OVERLAY_WIDTH if self.overlay else 0
-        fit_width(texts["players"], lines["players"], w - panel - 2 * HUD_MARGIN, 13, HUD_SMALLEST)
+        room = w - panel - 2 * HUD_MARGIN
+        fit_width(texts["players"], lines["players"], room, 13, HUD_SMALLEST)
+        players = texts["players"]
+        if players.text != lines["players"]:  # cut short, it lost its last players' scores: cut each name
+            for keep in range(max(len(name) for name in self.session.players) - 1, 0, -1):  # (as little as fits)
+                players.text = self.scoreboard(keep)  # (at the smallest size, where fit_width left it)
+                if players.content_width <= room:
+                    break
+            fit_width(players, players.text, room, HUD_SMALLEST, HUD_SMALLEST)
         self.banner.width = min(900, w - 40)
 
-    def scoreboard(self) -> str:
-        """Everyone's strokes on this hole, under the HUD when several play: 'Ann 2 · Bob 3 (in)'."""
+    def scoreboard(self, keep: int | None = None) -> str:
+        """Everyone's strokes on this hole, under the HUD when several play: 'Ann: 2 · Bob: 3 (in)' (a
+        colon, so 'Ann 2: 0' is the second Ann's score); names longer than `keep` cut short in the middle
+        ('Wilhelmi…rth'), so names that differ at the end stay apart."""
         if self.world is None or len(self.world.players) < 2:
             return ""
-        return "  ·  ".join(f"{name} {p.state.score}{' (in)' if p.state.holed else ''}"
+
+        def shown(name: str) -> str:
+            if keep is None or len(name) <= keep:
+                return name
+            tail = max(1, keep // 3)
+            return name[:keep - tail].rstrip() + "…" + name[len(name) - tail:].lstrip()
+
+        return "  ·  ".join(f"{shown(name)}: {p.state.score}{' (in)' if p.state.holed else ''}"
                             f"{' (picked up)' if p.state.picked_up else ''}"
                             for name, p in zip(self.session.players, self.world.players))
 

@@ -437,10 +437,11 @@ def draw_turn_ring(x: float, y: float, radius: float, colour) -> None:
     arcade.draw_circle_outline(x, y, radius * 1.45, colour, 0.07, num_segments=40)
 
 
-def fit_width(text: arcade.Text, full: str, width: float, size: float, smallest: float = 9.0) -> None:
+def fit_width(text: arcade.Text, full: str, width: float, size: float, smallest: float = 9.0,
+              middle: bool = False) -> None:
     """Show `full` in `text` at most `width` pixels wide: at `size`, else as much smaller as it needs
-    (down to `smallest`), else at `smallest` cut short with an ellipsis. A long player name or a
-    narrow window then never runs text into its neighbours."""
+    (down to `smallest`), else at `smallest` cut short with an ellipsis (in the `middle`, for a name:
+    `cut_middle`). A long player name or a narrow window then never runs text into its neighbours."""
     text.text, text.font_size = full, size
     if text.content_width <= width:
         return
@@ -455,7 +456,16 @@ def fit_width(text: arcade.Text, full: str, width: float, size: float, smallest:
     keep = len(full)
     while keep > 1 and text.content_width > width:
         keep -= 1
-        text.text = full[:keep].rstrip() + "…"
+        text.text = cut_middle(full, keep) if middle else full[:keep].rstrip() + "…"
+
+
+def cut_middle(name: str, keep: int) -> str:
+    """`name` if at most `keep` characters long, else `keep` of them about an ellipsis in the middle
+    ('Wilhelmi…rth'): names that differ only at the end ('Ann', 'Ann 2') stay apart."""
+    if len(name) <= keep:
+        return name
+    tail = max(1, keep // 3)
+    return name[:keep - tail].rstrip() + "…" + name[len(name) - tail:].lstrip()
 
 
 def text_box(text: arcade.Text) -> tuple[float, float, float, float]:

@@ -284,7 +284,7 @@ def test_repeated_long_names_are_numbered_within_the_length():
     assert names[:3] == [long, f"{long[:18]} 2", f"{long[:18]} 3"]
 
 
-LONG_NAMES = ["Alexandra Worthingto", "Bob", "CPU", "Christopher Robinson"]
+LONG_NAMES = ["Alexandra Worthingto", "Alexandra Worthingt2", "CPU", "Christopher Robinson"]
 
 
 def _extent(text: arcade.Text) -> tuple[float, float]:
@@ -325,6 +325,8 @@ def test_screens_keep_long_names_and_scores_inside_their_places(window, size, sh
     for cell in results_view.cells:
         room = label_w - 10 if cell.col == 0 else cell_w
         assert cell.text.content_width <= room, (cell.text.text, cell.text.content_width, room)
+    labels = [cell.text.text for cell in results_view.cells if cell.col == 0 and cell.row in results_view.player_rows]
+    assert len(set(labels)) == len(labels) == 4, labels  # names cut in the middle stay apart (QA: 'WWWW…' twice)
     assert_not_blank(snapshot(window, shots_dir, f"results-long-names-{size[0]}"), "results")
     game.players = list(LONG_NAMES)
     play = PlayView(game, game.start_round(1), ScreenFlow(window, game))

@@ -6,7 +6,7 @@ from __future__ import annotations
 import arcade
 from arcade.gui import UIBoxLayout, UIView
 
-from polygolf.game.drawing import draw_backed, fit_width
+from polygolf.game.drawing import cut_middle, draw_backed, fit_width
 from polygolf.game.session import Game, HoleResult, Round, escaped, golf_name, par_text, penalty_text, strokes_text
 from polygolf.game.views.navigation import Navigator, window_key
 from polygolf.game.views.widgets import KeyboardButtons, themed_button, title
@@ -40,12 +40,8 @@ class BetweenView(UIView):
         self.headline = title(headline, theme, 44)
         self.detail = arcade.Text(f"Hole {first.number} · {first.name} · par {first.par}", 0, 0,
                                   theme.rgba("text"), 18, anchor_x="center", anchor_y="center")
-        lines = []
-        for seat, result in enumerate(results):
-            total = round_.total_strokes(seat)
-            lines.append(f"{'' if alone else round_.players[seat] + ': '}{result_line(result, not alone)}"
-                         f"  ·  total so far {strokes_text(total)} ({par_text(total - round_.total_par(seat))})")
-        self.lines = arcade.Text("\n".join(lines), 0, 0, theme.rgba("text"), PLAYERS_FONT, anchor_x="center",
+        self._results = results
+        self.lines = arcade.Text(self.players_lines(), 0, 0, theme.rgba("text"), PLAYERS_FONT, anchor_x="center",
                                  anchor_y="top", multiline=True, width=1100, align="center")
         hole = round_.course.holes[first.number - 1]
         best = game.best_hole(hole.id) if not isinstance(hole, Exception) else None
@@ -92,6 +88,19 @@ class BetweenView(UIView):
         elif symbol == arcade.key.ESCAPE:
             self.on_menu()
 
+    def players_lines(self, keep: list[int] | None = None) -> str:
+        """A line a player: the hole's result and the total so far; a name longer than its `keep` cut in
+        the middle (`drawing.cut_middle`)."""
+        round_, results = self.round, self._results
+        alone = len(results) == 1
+        lines = []
+        for seat, result in enumerate(results):
+            total = round_.total_strokes(seat)
+            name = round_.players[seat] if keep is None else cut_middle(round_.players[seat], keep[seat])
+            lines.append(f"{'' if alone else name + ': '}{result_line(result, not alone)}"
+                         f"  ·  total so far {strokes_text(total)} ({par_text(total - round_.total_par(seat))})")
+        return "\n".join(lines)
+
     def _fit(self, w: int, h: int) -> None:
         """Every line within the window: each player's line whole (all smaller if the widest does not
         fit), the others shrunk to the width; and the gaps between them closed up (the headline
@@ -108,6 +117,15 @@ class BetweenView(UIView):
             if self.lines.content_height <= unwrapped:
                 break
             self.lines.font_size = max(9.0, self.lines.font_size - 0.5)  # (a space can tip a line over)
+        self.lines.width = 10_000
+        keep = [len(name) for name in self.round.players]
+        for seat in range(len(self._results)):  # at 9 pt still too wide: cut the names of the lines that are
+            while keep[seat] > 1:
+                self.lines.text = self.players_lines(keep).split("\n")[seat]
+                if self.lines.content_width <= w - 40:
+                    break
+                keep[seat] -= 1
+        self.lines.text = self.players_lines(keep)
         self.lines.width = w - 40
         self.skipped.width = min(1100, w - 40)
         for text, (full, size) in self._lines.items():

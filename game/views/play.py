@@ -32,6 +32,7 @@ from polygolf.game.drawing import (
     HUD_HEIGHT,
     HoleArt,
     PlayerBallArt,
+    cut_middle,
     dotted_path,
     draw_arrow,
     draw_backed,
@@ -269,15 +270,8 @@ class PlayView(arcade.View):
         ('Wilhelmi…rth'), so names that differ at the end stay apart."""
         if self.world is None or len(self.world.players) < 2:
             return ""
-
-        def shown(name: str) -> str:
-            if keep is None or len(name) <= keep:
-                return name
-            tail = max(1, keep // 3)
-            return name[:keep - tail].rstrip() + "…" + name[len(name) - tail:].lstrip()
-
-        return "  ·  ".join(f"{shown(name)}: {p.state.score}{' (in)' if p.state.holed else ''}"
-                            f"{' (picked up)' if p.state.picked_up else ''}"
+        return "  ·  ".join(f"{name if keep is None else cut_middle(name, keep)}: {p.state.score}"
+                            f"{' (in)' if p.state.holed else ''}{' (picked up)' if p.state.picked_up else ''}"
                             for name, p in zip(self.session.players, self.world.players))
 
     def turn_prefix(self) -> str:

@@ -230,8 +230,8 @@ def _fit_row(cells: list[Cell], width: float, height: float, readable: float) ->
     if size < readable and any(cell.short != cell.full for cell in cells):
         strings = [cell.short for cell in cells]
         size = size_for(strings)
-    for cell, string in zip(cells, strings):
-        fit_width(cell.text, string, width, size, size)
+    for cell, string in zip(cells, strings):  # (a name, in the first column, cut in the middle)
+        fit_width(cell.text, string, width, size, size, middle=cell.col == 0)
 
 
 def _width_at(text: arcade.Text, size: float) -> float:

@@ -13,13 +13,14 @@ from polygolf.game.theme import Theme
 
 SMALLEST_LABEL = 11  # points: a button's label is never smaller (it is cut short instead)
 LABEL_PAD = 8  # px of a button's width kept clear of its label
+FOCUS_BORDER = 4  # px: the focused (or hovered) button's edge, twice the others' (Night's light edges hid it)
 
 
 def button_style(theme: Theme, font_size: float = 16) -> dict[str, UIFlatButton.UIStyle]:
     normal = UIFlatButton.UIStyle(font_size=font_size, font_color=theme.rgba("button_text"), bg=theme.rgba("button"),
                                   border=theme.rgba("wall_edge"), border_width=2)
     hover = UIFlatButton.UIStyle(font_size=font_size, font_color=theme.rgba("button_text"),
-                                 bg=theme.rgba("button_hover"), border=theme.rgba("text"), border_width=2)
+                                 bg=theme.rgba("button_hover"), border=theme.rgba("text"), border_width=FOCUS_BORDER)
     press = UIFlatButton.UIStyle(font_size=font_size, font_color=theme.rgba("button"), bg=theme.rgba("text"),
                                  border=theme.rgba("text"), border_width=2)
     disabled = UIFlatButton.UIStyle(font_size=font_size, font_color=(*theme.rgba("text")[:3], 110),

@@ -684,6 +684,15 @@ def test_explain_takes_a_hole_file_from_any_folder(tmp_path, capsys):
     assert capsys.readouterr().out.startswith("Straight (straight) at balanced")
 
 
+def test_explain_of_a_courses_library_or_theme_file_says_what_it_is(capsys):
+    """Not 'name: missing' (it was read as a scene)."""
+    for path, what in ((HOLES_DIR / "courses.yaml", "a courses file"), (HOLES_DIR / "tiles.yaml", "a tile library"),
+                       (THEMES_DIR / "night.yaml", "a theme")):
+        assert main(["explain", str(path)]) == 2
+        assert capsys.readouterr().err.strip() == (f"polygolf: {path} is {what}: explain takes a hole or a scene "
+                                                   "(a file, a name, or COURSE:HOLE)")
+
+
 def test_scenes_and_holes_are_found_by_name_from_any_folder(tmp_path, monkeypatch, capsys):
     """An installed game's user is not in the source tree: the README's `content/scenes/...` paths,
     and bare names, find the shipped files."""

@@ -47,10 +47,19 @@ def _file(target: str) -> Path | None:
     return None if ":" in target or Path(target).suffix not in (".yaml", ".yml") else Path(target)
 
 
+KIND_WORDS = {"library": "tile library", "courses": "courses file", "theme": "theme"}
+
+
 def explain(target: str, preset: str | None = None) -> str:
     """`target`: a scene or hole file or name, or COURSE:HOLE (hole number or id)."""
     path = _file(target)
     if path is not None and path.exists():
+        from polygolf.game.tools.validate import _kind
+
+        kind = _kind(path)
+        if kind not in ("hole", "scene", "unknown"):  # (an unknown one is read as a scene: its errors say why)
+            raise KeyError(f"{path} is a {KIND_WORDS.get(kind, kind)}: explain takes a hole or a scene (a file, a "
+                           "name, or COURSE:HOLE)")
         data, _ = load_yaml(path)
         if not (isinstance(data, dict) and "tiles" in data):
             with build_scene_file(path, preset) as sim:

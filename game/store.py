@@ -83,8 +83,12 @@ ROUND_VALUES = (f"c.strokes BETWEEN 1 AND {MAX_STROKES * MAX_ENTRIES} AND c.par 
 
 
 def _not_a_folder(folder: Path) -> str | None:
-    """'X is a file, not a folder' when the data folder or one above it is a file (else None)."""
+    """'X is a file, not a folder' when the data folder or one above it is a file, 'X is a link that
+    leads nowhere' when it is a link to nothing or a loop of links (mkdir says only 'File exists')
+    (else None)."""
     for place in (folder, *folder.parents):
+        if place.is_symlink() and not place.exists():
+            return f"{place} is a link that leads nowhere (to nothing, or round a loop of links)"
         if place.exists():
             return None if place.is_dir() else f"{place} is a file, not a folder"
     return None

@@ -488,6 +488,19 @@ def test_an_unusable_data_folder_costs_a_warning_not_the_round(tmp_path, monkeyp
     assert err and all(line.startswith("polygolf: cannot") for line in err)
 
 
+def test_a_data_folder_that_is_a_link_to_nowhere_is_said_so():
+    """A loop of links (or a link to nothing) where the data folder belongs: mkdir's 'File exists'
+    said nothing of why."""
+    loop_a, loop_b = Path(tmp := os.environ["POLYGOLF_DATA"]) / "a", Path(tmp) / "b"
+    loop_a.parent.mkdir(parents=True, exist_ok=True)
+    loop_a.symlink_to(loop_b)
+    loop_b.symlink_to(loop_a)
+    store = Store(loop_a, echo=False)
+    assert store.save_settings({"volume": 0.5}) is False
+    assert store.warnings == [f"polygolf: cannot save the settings: {loop_a}: {loop_a} is a link that leads nowhere "
+                              "(to nothing, or round a loop of links)"]
+
+
 def test_a_locked_database_costs_a_warning(capsys):
     store = Store(echo=False)
     assert store.save_settings({"volume": 0.5})

@@ -16,7 +16,7 @@ from polygolf.engine.golf.holes import Course, Hole, load_all_courses
 from polygolf.engine.golf.nine import COURSE_ID as RANDOM_NINE
 from polygolf.engine.golf.nine import load_nine, new_seed
 from polygolf.engine.golf.play import HolePlay
-from polygolf.engine.loading.limits import Name
+from polygolf.engine.loading.limits import Name, breaks_a_line
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.engine.physics.polygon import Vec
@@ -84,10 +84,11 @@ def player_name(text: str) -> str:
     Unicode's composed form (NFC), so 'Ánn' typed as one character or as 'A' and an accent is one
     player, and is held to the rules a course's name is (`limits.Name`: no control characters or
     direction overrides, no spaces about it, something in it that shows: a name of accents alone is
-    none), printable text and at most MAX_NAME characters."""
+    none; nor halves of surrogate pairs, which bytes that are not UTF-8 come as) and at most MAX_NAME
+    characters."""
     name = unicodedata.normalize("NFC", text)
-    if not name.isprintable():  # (bytes that are not UTF-8 come as unprintable escapes)
-        raise ValueError("a name is printable text (no control characters; UTF-8)")
+    if any(unicodedata.category(c) == "Cs" for c in name):  # (how bytes that are not UTF-8 come)
+        raise ValueError("a name is UTF-8 text (bytes of another encoding in it)")
     try:
         _CONTENT_NAME.validate_python(name)
     except ValidationError as exc:
@@ -98,10 +99,12 @@ def player_name(text: str) -> str:
 
 
 def escaped(text: str) -> str:
-    """`text` to show on a terminal or a screen: every character that is not printable (a newline, an
-    ESC starting a terminal's colour code, a direction override) as its Python escape, '\\x1b'; the
-    rest as it is. For what was read back from the database, which a hand may have edited."""
-    return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in text)
+    """`text` to show on a terminal or a screen: every character no name may hold (a newline, an ESC
+    starting a terminal's colour code, a direction override: `limits.breaks_a_line`) as its Python
+    escape, '\\x1b'; the rest as it is (a joiner in a Persian name too). For what was read back from
+    the database, which a hand may have edited."""
+    return "".join(c.encode("unicode_escape", "backslashreplace").decode("ascii") if breaks_a_line(c) else c
+                   for c in text)
 
 
 def unplayable(course: Course, start_at: int = 0) -> str | None:

@@ -51,12 +51,14 @@ class Theme(Strict_):
 
 
 # Colours that must tell apart for the game to be playable: what lies on the green against both of its
-# checker's greens, the walls against the ball, the words against what they are written on.
+# checker's greens, the ball against the walls and the hazards it rolls over, the words against what
+# they are written on.
 MUST_DIFFER = (
     *((thing, green) for thing in ("ball", "cup", "wall", "obstacle", "tee", "flag", "arrow", "arrow_strong",
                                    "sand_zone", "water", "ice", "slope", "bumper", "windmill")
       for green in ("green", "green_alt")),
-    ("ball", "wall"), ("ball", "ball_edge"), ("cup", "cup_rim"), ("text", "background"), ("text", "panel"),
+    ("ball", "wall"), ("ball", "ball_edge"), *(("ball", ground) for ground in ("sand_zone", "water", "ice")),
+    ("cup", "cup_rim"), ("text", "background"), ("text", "panel"),
     ("button_text", "button"), ("button_text", "button_hover"),
 )
 MIN_CONTRAST = 50.0  # RGB distance; the shipped themes' least is 61 (Sand's obstacle on its green)

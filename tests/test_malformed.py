@@ -154,6 +154,8 @@ CASES = [
     ("theme-bad-colour", "theme", _sub(THEME, '"#4f9d4a"', '"green"'), 5, "green", 'a colour is "#RRGGBB"'),
     ("theme-ball-the-green-s-colour", "theme", _sub(THEME, 'ball: "#ffd54f"', 'ball: "#50a04a"'), 15, "ball",
      "too close to green (#4f9d4a) to tell apart"),
+    ("theme-ball-the-ice-s-colour", "theme", re.sub(r'\nice: "[^"]*"', '\nice: "#fdd04f"', THEME, count=1), 15, "ball",
+     "too close to ice (#fdd04f)"),
     ("theme-missing-colour", "theme", re.sub(r"\nwall: [^\n]*", "", THEME, count=1), 3, "wall", "missing"),
     ("theme-number-colour", "theme", _sub(THEME, '"#4f9d4a"', "123456"), 5, "green", "valid string"),
     ("theme-unknown-key", "theme", THEME + "sparkle: \"#ffffff\"\n", None, "sparkle", "unknown key"),

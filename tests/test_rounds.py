@@ -564,11 +564,12 @@ def test_a_refused_write_or_another_versions_database_is_never_set_aside(capsys)
         assert conn.execute("SELECT COUNT(*) FROM rounds").fetchone()[0] == 1
 
 
-@pytest.mark.parametrize("names", ["J\udcf6rg", "A\x07\x1b[31mRED"])
-def test_names_that_are_not_printable_text_are_refused_in_one_line(names, capsys):
+@pytest.mark.parametrize(("names", "why"), [("J\udcf6rg", "a name is UTF-8 text"),
+                                           ("A\x07\x1b[31mRED", "may not hold control characters, got U+0007")])
+def test_names_that_are_not_printable_text_are_refused_in_one_line(names, why, capsys):
     assert autoplay("--names", names) == 2
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and "printable" in err[-1]
+    assert len(err) == 1 and why in err[-1], err
 
 
 def test_preset_switches_are_recorded_and_the_round_replays_exactly(courses):
@@ -783,7 +784,8 @@ def test_scores_on_the_fresh_database_that_replaced_a_damaged_one_has_no_rounds_
 
 @pytest.mark.parametrize(("names", "why"), [
     ("\u0301\u0301", "a name needs a letter, digit or sign that shows"),  # accents alone: invisible
-    ("Ann,\u200b", "printable"),  # a zero-width space alone
+    ("Ann,\u200b", "a name needs a letter, digit or sign that shows"),  # a zero-width space alone
+    ("Ann,Bo\u202eb", "may not hold control characters, got U+202E"),  # a direction override
     ("A\u0301nn,\u00c1nn", "every player needs a different name"),  # one name, typed two ways
     (" \u00c1nn , Bob,A\u0301nn", "every player needs a different name"),  # (spaces about it are no part)
     ("Abcdefghijklmnopqrstu", "at most 20 characters"),
@@ -792,6 +794,19 @@ def test_player_names_follow_the_rules_of_a_courses_name(names, why, capsys):
     assert autoplay("--names", names) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("polygolf: --names: ") and why in err[0], err
+
+
+def test_names_written_with_joiners_are_names():
+    """Persian, Devanagari and an emoji family need U+200C / U+200D, which are no control characters:
+    taken as a course's name takes them, and shown as they are (QA: refused as 'not printable')."""
+    from polygolf.game.cli import names_arg
+    from polygolf.game.session import escaped
+
+    names = ["\u0645\u06cc\u200c\u062e\u0648\u0627\u0647\u0645", "\u0915\u094d\u200d\u0937",
+             "\U0001f468\u200d\U0001f469\u200d\U0001f467"]
+    assert names_arg(",".join(names)) == names
+    assert [escaped(name) for name in names] == names
+    assert escaped("Eve\n\x1b[31m\u202e") == "Eve\\n\\x1b[31m\\u202e"
 
 
 def test_player_names_are_kept_in_composed_form():

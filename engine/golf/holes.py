@@ -82,8 +82,8 @@ def _check_listed_effects(parsed: ParsedHole, layout: HoleLayout) -> None:
     present |= {"launch"} if parsed.spec.launch is not None else set()
     missing = [e for e in CONTENT_EFFECTS if e in present and e not in listed]
     if missing:
-        raise parsed.error(("effects",), f"leaves out {', '.join(missing)}, which the hole holds (its tiles would be "
-                                         "drawn but do nothing): list them, or leave effects out for what the "
+        raise parsed.error(("effects",), f"leaves out {', '.join(missing)}, which the hole holds (left out, it would "
+                                         "be there but do nothing): list them, or leave effects out for what the "
                                          "hole needs")
     extra = [e for e in CONTENT_EFFECTS if e in listed and e not in present]
     if extra:

@@ -111,11 +111,18 @@ Acceleration = finite(-MAX_GRAVITY, MAX_GRAVITY)
 _BIDI = {*range(0x202A, 0x202F), *range(0x2066, 0x206A), 0x200E, 0x200F, 0x061C}  # direction overrides, marks
 
 
+def breaks_a_line(c: str) -> bool:
+    """A character no name may hold: a control character or line break, a direction override or mark
+    (it reorders what follows), half a surrogate pair (bytes that were not UTF-8). Joiners (U+200C,
+    U+200D: Persian, Devanagari, emoji families) and other format characters are text."""
+    return unicodedata.category(c) in ("Cc", "Zl", "Zp", "Cs") or ord(c) in _BIDI
+
+
 def _one_line(name: str) -> str:
     """A name is shown on one line (HUD, scorecard, console, error messages) and found by what it
     shows: a control character would break the line, a direction override reorder what follows it,
     spaces about it or nothing visible in it make a name that looks like another or like none."""
-    bad = next((c for c in name if unicodedata.category(c) in ("Cc", "Zl", "Zp") or ord(c) in _BIDI), None)
+    bad = next((c for c in name if breaks_a_line(c)), None)
     if bad is not None:
         raise ValueError(f"a name may not hold control characters, got U+{ord(bad):04X}")
     if name != name.strip():

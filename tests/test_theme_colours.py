@@ -8,6 +8,7 @@ import math
 
 import pytest
 
+from polygolf.game.drawing import lightness
 from polygolf.game.theme import FALLBACK, Theme, load_themes
 
 THEMES, _ = load_themes()
@@ -19,15 +20,6 @@ MIN_DISTANCE = 70.0  # RGB distance; the grass checker's two greens are 10 apart
 def distance(theme: Theme, a: str, b: str) -> float:
     return math.dist(theme.rgba(a)[:3], theme.rgba(b)[:3])
 
-
-def lightness(rgb) -> float:
-    """WCAG relative luminance, 0 (black) to 1 (white)."""
-    def linear(c: int) -> float:
-        c /= 255
-        return c / 12.92 if c <= 0.03928 else ((c + 0.055) / 1.055) ** 2.4
-
-    r, g, b = (linear(c) for c in rgb[:3])
-    return 0.2126 * r + 0.7152 * g + 0.0722 * b
 
 
 def test_the_three_shipped_themes_load():

@@ -10,7 +10,15 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from polygolf.engine.golf.layout import HoleLayout, layout_hole, point_clearance, tile_path
-from polygolf.engine.loading.course import CoursesFile, HoleSpec, ParsedHole, TileLibrary, load_library, parse_hole
+from polygolf.engine.loading.course import (
+    HAZARDS,
+    CoursesFile,
+    HoleSpec,
+    ParsedHole,
+    TileLibrary,
+    load_library,
+    parse_hole,
+)
 from polygolf.engine.loading.paths import HOLES_DIR, content_roots, misplaced_folders
 from polygolf.engine.loading.yamlsource import ContentError, format_loc, line_of, load_yaml, validate
 from polygolf.engine.physics.polygon import bounding_radius
@@ -66,7 +74,7 @@ def _check_tee_and_cup(parsed: ParsedHole, layout: HoleLayout, library: TileLibr
 
 # The effects a hole's own content brings (its tiles' hazards, its launcher): a list of effects must
 # name those it has, and only those (the physics effects it may choose freely).
-CONTENT_EFFECTS = ("sand", "water", "ice", "slope", "bumper", "windmill", "launch")
+CONTENT_EFFECTS = (*HAZARDS, "launch")
 
 
 def _check_listed_effects(parsed: ParsedHole, layout: HoleLayout) -> None:
@@ -87,9 +95,9 @@ def _check_listed_effects(parsed: ParsedHole, layout: HoleLayout) -> None:
                                          "hole needs")
     extra = [e for e in CONTENT_EFFECTS if e in listed and e not in present]
     if extra:
-        where = parsed.spec.effects.index(extra[0])
-        raise parsed.error(("effects", where), f"the hole holds no {extra[0]} (no tile's pattern has it)"
-                           if extra[0] != "launch" else "the hole has no launch (its `launch:` key)")
+        why = f"the hole holds no {extra[0]} (no tile's pattern has it)" if extra[0] != "launch" \
+            else "the hole has no launch (its `launch:` key)"
+        raise parsed.error(("effects", listed.index(extra[0])), why)
 
 
 def _check_windmill_room(parsed: ParsedHole, layout: HoleLayout, library: TileLibrary) -> None:

@@ -363,7 +363,7 @@ def _part_clear(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, start_a: np.
                 clearance: float, t0: float, t1: float, own_faces: bool) -> bool:
     """`stays_clear` over [t0, t1]: along a face of B (exact if B stands still), or (`own_faces`)
     of A, turning with it (`_least_beyond_face`)."""
-    if start_b[0] == end_b[0] and start_b[1] == end_b[1] and start_b[2] == end_b[2]:
+    if _still(start_b, end_b):
         c, sn = math.cos(start_b[2]), math.sin(start_b[2])  # (1 and 0 for a wall: its rows as they are)
         for k in range(sb, eb):
             nx, ny = c * lnb[k, 0] - sn * lnb[k, 1], sn * lnb[k, 0] + c * lnb[k, 1]
@@ -486,6 +486,11 @@ def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reac
                                                 -GAP_TOLERANCE, t, work[4][4]):
         return NO_HIT
     return t
+
+
+@inlined_leaf
+def _still(start: np.ndarray, end: np.ndarray) -> bool:
+    return start[0] == end[0] and start[1] == end[1] and start[2] == end[2]
 
 
 @inlined_leaf

@@ -41,7 +41,8 @@ class BetweenView(UIView):
         self.detail = arcade.Text(f"Hole {first.number} · {first.name} · par {first.par}", 0, 0,
                                   theme.rgba("text"), 18, anchor_x="center", anchor_y="center")
         self._results = results
-        self.lines = arcade.Text(self.players_lines(), 0, 0, theme.rgba("text"), PLAYERS_FONT, anchor_x="center",
+        self._full_lines = "\n".join(self.player_line(seat) for seat in range(len(results)))
+        self.lines = arcade.Text(self._full_lines, 0, 0, theme.rgba("text"), PLAYERS_FONT, anchor_x="center",
                                  anchor_y="top", multiline=True, width=1100, align="center")
         hole = round_.course.holes[first.number - 1]
         best = game.best_hole(hole.id) if not isinstance(hole, Exception) else None
@@ -88,18 +89,14 @@ class BetweenView(UIView):
         elif symbol == arcade.key.ESCAPE:
             self.on_menu()
 
-    def players_lines(self, keep: list[int] | None = None) -> str:
-        """A line a player: the hole's result and the total so far; a name longer than its `keep` cut in
-        the middle (`drawing.cut_middle`)."""
-        round_, results = self.round, self._results
-        alone = len(results) == 1
-        lines = []
-        for seat, result in enumerate(results):
-            total = round_.total_strokes(seat)
-            name = round_.players[seat] if keep is None else cut_middle(round_.players[seat], keep[seat])
-            lines.append(f"{'' if alone else name + ': '}{result_line(result, not alone)}"
-                         f"  ·  total so far {strokes_text(total)} ({par_text(total - round_.total_par(seat))})")
-        return "\n".join(lines)
+    def player_line(self, seat: int, keep: int | None = None) -> str:
+        """The seat's line: the hole's result and the total so far; its name, if longer than `keep`, cut
+        in the middle (`drawing.cut_middle`)."""
+        round_, result, alone = self.round, self._results[seat], len(self._results) == 1
+        total = round_.total_strokes(seat)
+        name = round_.players[seat] if keep is None else cut_middle(round_.players[seat], keep)
+        return (f"{'' if alone else name + ': '}{result_line(result, not alone)}"
+                f"  ·  total so far {strokes_text(total)} ({par_text(total - round_.total_par(seat))})")
 
     def _fit(self, w: int, h: int) -> None:
         """Every line within the window: each player's line whole (all smaller if the widest does not
@@ -108,6 +105,7 @@ class BetweenView(UIView):
         if (w, h) == self._fitted_to:
             return
         self._fitted_to = (w, h)
+        self.lines.text = self._full_lines  # (a smaller window's fit may have cut names)
         self.lines.font_size, self.lines.width = PLAYERS_FONT, 10_000  # (no wrapping: the widest line's width)
         self.lines.font_size = max(9.0, PLAYERS_FONT * min(1.0, (w - 40) / max(self.lines.content_width, 1.0)))
         while self.lines.font_size > 9.0:  # smaller until no line wraps at the width it was chosen for
@@ -118,14 +116,15 @@ class BetweenView(UIView):
                 break
             self.lines.font_size = max(9.0, self.lines.font_size - 0.5)  # (a space can tip a line over)
         self.lines.width = 10_000
-        keep = [len(name) for name in self.round.players]
+        lines = []
         for seat in range(len(self._results)):  # at 9 pt still too wide: cut the names of the lines that are
-            while keep[seat] > 1:
-                self.lines.text = self.players_lines(keep).split("\n")[seat]
-                if self.lines.content_width <= w - 40:
-                    break
-                keep[seat] -= 1
-        self.lines.text = self.players_lines(keep)
+            keep = len(self.round.players[seat])
+            self.lines.text = self.player_line(seat)
+            while keep > 1 and self.lines.content_width > w - 40:
+                keep -= 1
+                self.lines.text = self.player_line(seat, keep)
+            lines.append(self.lines.text)
+        self.lines.text = "\n".join(lines)
         self.lines.width = w - 40
         self.skipped.width = min(1100, w - 40)
         for text, (full, size) in self._lines.items():

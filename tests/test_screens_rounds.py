@@ -271,6 +271,34 @@ def test_players_type_their_names_and_the_game_keeps_them(window, shots_dir):  #
     assert Game.load().players == ["Ann", "Ann 2"]  # kept for the next launch
 
 
+def test_a_name_the_rules_refuse_is_said_so_and_waits_to_be_typed_again(window, shots_dir):  # noqa: F811
+    """QA: a name of accents alone (it shows nothing) silently became 'Player 2'. Done now says why
+    where the hint was and keeps the screen, the refused box active; emptied, the box keeps its
+    seat's default and Done goes back to the menu."""
+    from polygolf.game.views.menu import MenuView
+    from polygolf.game.views.names import HINT, NamesView
+
+    from .test_screens import send
+
+    game = Game.load()
+    game.players = ["Ann", "Bob"]
+    ScreenFlow(window, game).names()
+    names = window.current_view
+    assert isinstance(names, NamesView)
+    names.boxes[1].text = "\u0301\u0301"
+    key(window, arcade.key.ENTER)
+    assert window.current_view is names
+    assert names.hint.text.startswith("Player 2's name: a name needs a letter") and names.refused
+    assert names.boxes[1].active and not names.boxes[0].active
+    assert_not_blank(snapshot(window, shots_dir, "names-refused"), "names-refused")
+    for _ in range(2):
+        send(window, "on_text_motion", arcade.key.MOTION_BACKSPACE)
+    assert names.boxes[1].text == ""
+    key(window, arcade.key.ENTER)
+    assert isinstance(window.current_view, MenuView)
+    assert game.players == ["Ann", "Player 2"] and HINT not in names.hint.text
+
+
 def test_repeated_long_names_are_numbered_within_the_length():
     """Two players typing the same 20-character name (the longest) are still told apart."""
     from types import SimpleNamespace

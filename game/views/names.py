@@ -1,6 +1,6 @@
 """The players' names, one box each (the count is the menu's Players choice). Enter or Done keeps
-them (an empty box keeps its default, as does a name the rules of names refuse; a repeated name is
-numbered); Esc leaves them as they were.
+them (an empty box keeps its default; a repeated name is numbered); a name the rules of names refuse
+is said so in place of the hint, and its box waits for another. Esc leaves them as they were.
 Tab moves to the next box, Shift+Tab back; F11 works here as everywhere (M is a letter in a name).
 
 A player named CPU is the computer (`session.is_computer`): each row's Computer button names its
@@ -14,7 +14,7 @@ import arcade
 from arcade.gui import UIAnchorLayout, UIBoxLayout, UIFlatButton, UILabel, UISpace, UIView
 from arcade.gui.experimental.restricted_input import UIRestrictedInput
 
-from polygolf.game.drawing import contrast, player_colour
+from polygolf.game.drawing import contrast, draw_backed, player_colour
 from polygolf.game.session import MAX_NAME, Game, is_computer, player_name
 from polygolf.game.views.navigation import Navigator, window_key
 from polygolf.game.views.widgets import themed_button, title
@@ -24,6 +24,7 @@ ROW_GAP = (6, 14)  # px between rows: when rows would be under 36 px, and otherw
 MARGIN = 10  # px
 TALL = 600  # px: a window this high has the large title
 SWATCH = 18  # px: the seat's ball beside its label
+HINT = "Tab: next name   Shift+Tab: back   Enter: done   Esc: back, unchanged   A player named CPU is the computer"
 LABEL_CONTRAST = 3.0  # WCAG's least for large text: a label in its ball's colour at least this far from the background
 
 
@@ -47,10 +48,9 @@ class NamesView(UIView):
         theme = game.theme
         self.background_color = theme.rgba("background")
         self.title = title("Who is playing?", theme, 36)
-        self.hint = arcade.Text("Tab: next name   Shift+Tab: back   Enter: done   Esc: back, unchanged   "
-                                "A player named CPU is the computer", 0, 0, theme.rgba("text"), 13,
-                                anchor_x="center", anchor_y="top", italic=True, multiline=True, width=1200,
-                                align="center")
+        self.hint = arcade.Text(HINT, 0, 0, theme.rgba("text"), 13, anchor_x="center", anchor_y="top", italic=True,
+                                multiline=True, width=1200, align="center")
+        self.refused = False  # whether the hint's place says why a name was refused
         self.column = UIBoxLayout(vertical=True, space_between=ROW_GAP[1])
         self.rows: list[UIBoxLayout] = []
         self.boxes: list[NameBox] = []
@@ -121,13 +121,12 @@ class NamesView(UIView):
         self.lay_out(width, height)
 
     def names(self) -> list[str]:
-        """The boxes' names, tidied: in Unicode's composed form (NFC: 'Ánn' typed either way is one
-        name), trimmed to MAX_NAME; an empty box, or a name the rules refuse (`session.player_name`,
-        a course's name's rules: one of accents alone shows nothing), gets its seat's default, and a
-        repeat a number."""
+        """The boxes' names, tidied (`tidy`); an empty box, or a name the rules refuse
+        (`session.player_name`, a course's name's rules: one of accents alone shows nothing), gets
+        its seat's default, and a repeat a number."""
         out: list[str] = []
         for seat, box in enumerate(self.boxes):
-            name = unicodedata.normalize("NFC", " ".join(box.text.split()))[:MAX_NAME].rstrip()
+            name = tidy(box.text)
             try:
                 name = player_name(name)
             except ValueError:
@@ -138,6 +137,18 @@ class NamesView(UIView):
                 name, number = base[:MAX_NAME - len(suffix)].rstrip() + suffix, number + 1
             out.append(name)
         return out
+
+    def refusal(self) -> tuple[int, str] | None:
+        """The first seat whose box holds a name the rules refuse, and why (an empty box is no
+        refusal: it keeps its seat's default)."""
+        for seat, box in enumerate(self.boxes):
+            name = tidy(box.text)
+            if name:
+                try:
+                    player_name(name)
+                except ValueError as exc:
+                    return seat, str(exc)
+        return None
 
     @staticmethod
     def toggle_text(name: str) -> str:
@@ -161,6 +172,18 @@ class NamesView(UIView):
         self.skill.text = self.skill_text()
 
     def on_done(self, _event=None) -> None:
+        """Keep the names, unless one is refused: then say why where the hint was and wait in its box
+        (QA: the name was silently replaced by the seat's default)."""
+        refused = self.refusal()
+        if refused is not None:
+            seat, why = refused
+            self.hint.text = f"Player {seat + 1}'s name: {why}. Type another, or empty the box for Player {seat + 1}."
+            self.hint.italic, self.hint.bold, self.refused = False, True, True
+            for box in self.boxes:
+                box.deactivate()
+            self.boxes[seat].activate()
+            self.lay_out(self.window.width, self.window.height)
+            return
         self.game.set_names(self.names())
         self.flow.menu()
 
@@ -188,4 +211,13 @@ class NamesView(UIView):
             if toggle.text != text:
                 toggle.text = text
         self.title.draw()
-        self.hint.draw()
+        if self.refused:
+            draw_backed(self.hint, self.game.theme.rgba("panel"), pad=6.0)
+        else:
+            self.hint.draw()
+
+
+def tidy(text: str) -> str:
+    """A box's text as a name: in Unicode's composed form (NFC: 'Ánn' typed either way is one name),
+    runs of spaces as one, trimmed to MAX_NAME."""
+    return unicodedata.normalize("NFC", " ".join(text.split()))[:MAX_NAME].rstrip()

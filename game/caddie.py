@@ -22,7 +22,6 @@ from __future__ import annotations
 import math
 import random
 import time
-from collections.abc import Sequence
 from concurrent.futures import Future
 from dataclasses import dataclass
 
@@ -31,7 +30,7 @@ from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.golf.shots import Shot, simulate_shots
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.physics.polygon import Vec
-from polygolf.game.golfer_process import GolferProcess, origin_of, question_for
+from polygolf.game.golfer_process import GolferProcess, origin_of, other_balls, question_for
 from polygolf.game.session import HINTS, SKILLS, RoundPlay, is_computer
 
 SHOW_SECONDS = 0.8  # the computer's arrow is drawn out over this, then shot
@@ -244,18 +243,12 @@ def preview_path(hole: HolePlay, shape: ShapeSpec, grab: Vec, arrow: Vec) -> tup
     ball = hole.ball
     start = (ball.x, ball.y)
     shot = Shot(start, arrow, (grab[0] - ball.x, grab[1] - ball.y), ball.angle)
-    others = [_outline_at(p.collider.outline, p.body.x, p.body.y, p.body.angle)
-              for seat, p in enumerate(hole.players) if seat != hole.turn and not p.state.finished]
     result, = simulate_shots(hole.hole, [shot], hole.knobs, shape=shape, max_seconds=PREVIEW_SECONDS, path=True,
-                             windmills=[w.angle for w in hole.windmills], until_contact=True, obstacles=others)
+                             windmills=[w.angle for w in hole.windmills], until_contact=True,
+                             obstacles=other_balls(hole))
     path = result.path
     if result.contact is not None:
         path = path[:result.contact]
     elif result.penalties:
         path = path[:-1]  # the last point is where water put the ball back
     return [start, *path], result.contact_at
-
-
-def _outline_at(local: Sequence[Vec], x: float, y: float, angle: float) -> list[Vec]:
-    c, s = math.cos(angle), math.sin(angle)
-    return [(x + c * px - s * py, y + s * px + c * py) for px, py in local]

@@ -391,7 +391,7 @@ def _autoplay(args: argparse.Namespace) -> int:
 
     from polygolf.engine.golf.holes import Hole, find_course
     from polygolf.game.app import build_nine_here
-    from polygolf.game.golfer_process import SEARCH_EFFORT, Question, answer, origin_of
+    from polygolf.game.golfer_process import answer, origin_of, question_for
     from polygolf.game.session import RANDOM_NINE, Game, par_text, strokes_text, unplayable
     from polygolf.game.tools.par import LAUNCHES, launches
 
@@ -425,10 +425,7 @@ def _autoplay(args: argparse.Namespace) -> int:
     rng = random.Random(0)  # the same round every time for the same arguments
 
     def plan(hole):
-        ball = hole.ball
-        shot = answer(Question(hole.hole, game.shape, (ball.x, ball.y), ball.angle,
-                               tuple(w.angle for w in hole.windmills), args.skill, rng.randrange(2 ** 31),
-                               args.preset, SEARCH_EFFORT))
+        shot = answer(question_for(hole, game.shape, args.skill, rng.randrange(2 ** 31), args.preset))
         return origin_of(shot), shot.arrow
 
     session.play_out(plan)

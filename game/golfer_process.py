@@ -13,8 +13,10 @@ This module imports no arcade, so the worker starts quickly and `autoplay` uses 
 
 from __future__ import annotations
 
+import math
 import multiprocessing
 import random
+from collections.abc import Sequence
 from concurrent.futures import Future, ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
@@ -24,7 +26,7 @@ from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.golf.search import SearchGolfer
 from polygolf.engine.golf.shots import Shot
 from polygolf.engine.loading.scene import ShapeSpec
-from polygolf.engine.physics.polygon import Vec
+from polygolf.engine.physics.polygon import Outline, Vec
 
 SEARCH_PRESET = "fast"  # the hint's and the computer's search: fast physics, as `polygolf par` proves holes
 SEARCH_EFFORT = "quick"
@@ -34,7 +36,8 @@ GOLFERS_KEPT = 4  # holes whose route map a worker keeps (building one costs 0.0
 @dataclass(frozen=True)
 class Question:
     """Which shot to play: a ball of `shape` at rest at `start`, turned `angle`, on `hole` whose
-    windmills stand at `windmills` (rad), by a golfer of `skill` (1 exact; the noise drawn from `seed`)."""
+    windmills stand at `windmills` (rad) and the other players' balls lie as `others` (outlines), by a
+    golfer of `skill` (1 exact; the noise drawn from `seed`)."""
 
     hole: Hole
     shape: ShapeSpec
@@ -45,15 +48,29 @@ class Question:
     seed: int = 0
     knobs: str = SEARCH_PRESET
     effort: str = SEARCH_EFFORT
+    others: tuple[Outline, ...] = ()
 
 
 def question_for(hole: HolePlay, shape: ShapeSpec, skill: float = 1.0, seed: int = 0,
                  knobs: str = SEARCH_PRESET) -> Question:
-    """The question for the ball whose turn it is, as it lies now (the other balls are not in it:
-    the search's world holds only its own ball)."""
+    """The question for the ball whose turn it is, as it lies now, among the other balls still in
+    play where they rest (the search meets them as walls: it does not plan a shot through them)."""
     ball = hole.ball
     return Question(hole.hole, shape, (ball.x, ball.y), ball.angle, tuple(w.angle for w in hole.windmills),
-                    skill, seed, knobs)
+                    skill, seed, knobs, others=other_balls(hole))
+
+
+def other_balls(hole: HolePlay) -> tuple[Outline, ...]:
+    """The outlines, where they rest, of the balls of the players whose turn it is not and who
+    are still playing the hole (a finished ball has left the green)."""
+    return tuple(outline_at(p.collider.outline, p.body.x, p.body.y, p.body.angle)
+                 for seat, p in enumerate(hole.players) if seat != hole.turn and not p.state.finished)
+
+
+def outline_at(local: Sequence[Vec], x: float, y: float, angle: float) -> Outline:
+    """A body's outline (about its centre) at pose (x, y, angle), in world coordinates."""
+    c, s = math.cos(angle), math.sin(angle)
+    return tuple((x + c * px - s * py, y + s * px + c * py) for px, py in local)
 
 
 def origin_of(shot: Shot) -> Vec:
@@ -77,7 +94,7 @@ def _golfer(q: Question) -> SearchGolfer:
 def answer(q: Question) -> Shot:
     """The shot a golfer of `q.skill` plays (runs in the worker; `autoplay` calls it directly)."""
     golfer = _golfer(q)
-    return golfer.aim(q.start, q.angle, q.windmills, q.skill, random.Random(q.seed))
+    return golfer.aim(q.start, q.angle, q.windmills, q.skill, random.Random(q.seed), obstacles=q.others)
 
 
 def _ready() -> bool:

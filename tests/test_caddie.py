@@ -159,6 +159,45 @@ def test_the_hint_at_skill_1_sinks_the_straight_hole(meadow):
         play.close()
 
 
+def test_the_search_plays_round_another_players_ball_in_its_way(meadow):
+    """Hot seat: the other ball rests halfway along the straight line to the cup. The question
+    carries it (an outline where it lies) and the search meets it as a wall, so the shot it picks
+    goes round: played for real, the other ball is never struck and the ball drops. Asked without
+    it, the search plays straight through it, and the shot is spoiled."""
+    from dataclasses import replace
+
+    hole = meadow.holes[0]
+    outcomes = {}
+    for told in (True, False):
+        play = HolePlay(hole, PENTAGON, "balanced", players=2)
+        try:
+            me, other = play.players[0].body, play.players[1].body
+            cup = hole.layout.cup
+            halfway = (0.5 * (me.x + cup[0]), 0.5 * (me.y + cup[1]))
+            play.turn = 1
+            play.place_ball(*halfway)
+            play.turn = 0
+            question = question_for(play, PENTAGON, skill=1.0)
+            outline, = question.others
+            assert math.dist(_centre(outline), halfway) < 1e-9
+            shot = answer(question if told else replace(question, others=()))
+            play.shoot(origin_of(shot), shot.arrow)
+            for _ in range(60 * 20):
+                play.step()
+                if play.all_at_rest:
+                    break
+            outcomes[told] = (math.dist((other.x, other.y), halfway), play.players[0].state.holed)
+        finally:
+            play.close()
+    assert outcomes[True] == (0.0, True)
+    moved, holed = outcomes[False]
+    assert moved > 0.5 and not holed
+
+
+def _centre(outline) -> tuple[float, float]:
+    return sum(x for x, _ in outline) / len(outline), sum(y for _, y in outline) / len(outline)
+
+
 def test_the_worker_process_answers_and_goes_away(meadow):
     golfers = GolferProcess()
     try:

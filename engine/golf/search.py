@@ -28,6 +28,7 @@ from polygolf.engine.golf.holes import Hole
 from polygolf.engine.golf.layout import HoleLayout
 from polygolf.engine.golf.shots import Shot, ShotResult, simulate_shots
 from polygolf.engine.loading.scene import ShapeSpec
+from polygolf.engine.physics.polygon import Outline
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import MAX_SHOT_SPEED, SHOT_POWER
 
@@ -206,10 +207,13 @@ class SearchGolfer:
         stuck = STROKE if result.seconds >= SHOT_SECONDS else 0.0
         return STROKE * (1 + result.penalties) + left + stuck
 
-    def simulate(self, shots: list[Shot], windmills: Sequence[float] = (), path: bool = False) -> list[ShotResult]:
+    def simulate(self, shots: list[Shot], windmills: Sequence[float] = (), path: bool = False,
+                 obstacles: Sequence[Outline] = ()) -> list[ShotResult]:
+        """`simulate_shots` on this golfer's hole; `obstacles`: the other players' balls where they
+        rest, as walls (the shot should not count on passing through them)."""
         start = time.perf_counter()
         results = simulate_shots(self.hole, shots, self.knobs, shape=self.shape, max_seconds=SHOT_SECONDS, path=path,
-                                 windmills=windmills)
+                                 windmills=windmills, obstacles=obstacles)
         self.stats.shots += len(shots)
         self.stats.seconds += time.perf_counter() - start
         self.stats.ball_seconds += sum(r.seconds for r in results)
@@ -234,15 +238,18 @@ class SearchGolfer:
                 shots.append(Shot(start, self._arrow(heading, reach * left), angle=angle))
         return shots
 
-    def search(self, start: tuple[float, float], angle: float = 0.0, windmills: Sequence[float] = ()) -> Choice:
+    def search(self, start: tuple[float, float], angle: float = 0.0, windmills: Sequence[float] = (),
+               obstacles: Sequence[Outline] = ()) -> Choice:
         """The best shot found from `start` (the ball turned `angle`)."""
-        return self._tried(start, angle, windmills)[0]
+        return self._tried(start, angle, windmills, obstacles)[0]
 
-    def _tried(self, start: tuple[float, float], angle: float, windmills: Sequence[float]) -> list[Choice]:
+    def _tried(self, start: tuple[float, float], angle: float, windmills: Sequence[float],
+               obstacles: Sequence[Outline] = ()) -> list[Choice]:
         """Every shot the search simulated from `start`, best first."""
         effort = self.effort
         shots = self.fan(start, angle)
-        tried = [Choice(s, r, self.cost(r)) for s, r in zip(shots, self.simulate(shots, windmills))]
+        results = self.simulate(shots, windmills, obstacles=obstacles)
+        tried = [Choice(s, r, self.cost(r)) for s, r in zip(shots, results)]
         tried.sort(key=lambda c: c.cost)
         spread_heading, spread_power, spread_grab = 2 * math.pi / effort.directions, 0.25, 0.5 * self.radius
         for _ in range(effort.rounds):
@@ -259,26 +266,28 @@ class SearchGolfer:
                 side = max(-0.8 * self.radius, min(0.8 * self.radius, side))
                 grab = (-math.sin(heading) * side, math.cos(heading) * side)  # off the line: spin
                 shots.append(Shot(start, (length * math.cos(heading), length * math.sin(heading)), grab, angle))
-            tried += [Choice(s, r, self.cost(r)) for s, r in zip(shots, self.simulate(shots, windmills))]
+            tried += [Choice(s, r, self.cost(r)) for s, r in zip(shots, self.simulate(shots, windmills,
+                                                                                  obstacles=obstacles))]
             tried.sort(key=lambda c: c.cost)
             spread_heading, spread_power, spread_grab = 0.5 * spread_heading, 0.6 * spread_power, 0.6 * spread_grab
         return tried
 
     def aim(self, start: tuple[float, float], angle: float = 0.0, windmills: Sequence[float] = (),
-            skill: float = 1.0, rng: random.Random | None = None) -> Shot:
+            skill: float = 1.0, rng: random.Random | None = None, obstacles: Sequence[Outline] = ()) -> Shot:
         """The shot a golfer of `skill` (1 = exact, 0 = wild) plays from `start`, its direction and
         length spoiled by noise that grows as skill falls. Below skill 1 it is the shot, of the best
         few found, that fares best on average when played that loosely (each tried astray by one
         spread of the noise either way in aim and power): a shot that skirts water is a poor bet
-        for a golfer whose aim wanders, who would otherwise play it into the water again and again."""
+        for a golfer whose aim wanders, who would otherwise play it into the water again and again.
+        `obstacles`: the other players' balls (outlines where they rest), met as walls."""
         miss = _miss(skill)
-        tried = self._tried(start, angle, windmills)
+        tried = self._tried(start, angle, windmills, obstacles)
         shot = tried[0].shot
         if miss > 0.0 and len(tried) > 1:
             finalists = [c.shot for c in tried[:FINALISTS]]
             loose = [_astray(s, heading * AIM_SPREAD * miss, POWER_SPREAD * miss * power)
                      for s in finalists for heading, power in LOOSE_PLAYS]
-            costs = [self.cost(r) for r in self.simulate(loose, windmills)]
+            costs = [self.cost(r) for r in self.simulate(loose, windmills, obstacles=obstacles)]
             totals = [sum(costs[k * len(LOOSE_PLAYS):(k + 1) * len(LOOSE_PLAYS)]) for k in range(len(finalists))]
             shot = finalists[totals.index(min(totals))]
         return spoil(shot, skill, rng or self.rng)

@@ -21,7 +21,10 @@ return over them, a call that takes them on one branch only), and then every cal
 atomic operations per array. A *leaf* (`leaf_kernel`: it makes no array, returns only numbers, and
 calls only other leaves) is compiled without reference counting at all, so a call costs what its
 arithmetic does: the narrowphase's, the time of impact's and the solver's inner functions, called
-per piece and per point. numba refuses to compile a leaf that makes an array.
+per piece and per point. numba refuses to compile a leaf that makes an array. A leaf may call a
+*counted* kernel (`counted_kernel`: it makes arrays, but returns only numbers), which counts the
+references it takes itself: a stage whose work is mostly a leaf's (the sweep, the solver) is then a
+leaf too, and a run of stages hands it its tuples without counting a reference to each array in them.
 
 Each kernel module registers a *warm-up*: a call with small, typical arguments that makes numba
 compile (or load from the cache) every kernel it defines with the argument types the engine uses.
@@ -114,6 +117,14 @@ def leaf_kernel(fn: F) -> F:
     compiled = numba.njit(cache=True, nogil=True, _nrt=False)(fn)
     LEAVES.append(compiled)
     return compiled
+
+
+def counted_kernel(fn: F) -> F:
+    """A kernel that may make arrays but returns only numbers (never an array), so a leaf may call it:
+    compiled with reference counting whoever calls it (numba would compile it as its caller is)."""
+    if numba is None:
+        return fn
+    return numba.njit(cache=True, nogil=True, _nrt=True)(fn)
 
 
 def inlined_leaf(fn: F) -> F:

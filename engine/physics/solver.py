@@ -62,7 +62,7 @@ from polygolf.engine.physics.contact import (
     Manifold,
     table_of,
 )
-from polygolf.engine.physics.jit import kernel, leaf_kernel, warm_up
+from polygolf.engine.physics.jit import counted_kernel, kernel, leaf_kernel, warm_up
 from polygolf.engine.physics.motion import root as _root
 from polygolf.engine.physics.presets import Knobs
 from polygolf.engine.physics.settings import BLOCK_MAX_CONDITION, LINEAR_SLOP, MAX_CORRECTION, POSITION_BETA
@@ -618,7 +618,7 @@ def solve_knobs(knobs: Knobs) -> tuple[bool, int, int, int]:
             _CORRECTIONS[knobs.position_correction])
 
 
-@kernel
+@counted_kernel
 def solve_table(state: np.ndarray, static: np.ndarray, table: tuple, warm: bool, iterations: int,
                 position_iterations: int, correction: int, dt: float, friction: bool) -> int:
     """`solve_contacts` on a table's columns (`ContactTable.arrays`), the rows of a store's `state`
@@ -665,7 +665,7 @@ def _body_row(state: np.ndarray, static: np.ndarray, k: int) -> np.ndarray:
     return static if k == state.shape[0] else state[k]
 
 
-@kernel
+@counted_kernel
 def restitute(state: np.ndarray, static: np.ndarray, table: tuple, threshold: float) -> int:
     """`apply_restitution` on a table's columns (`ContactTable.arrays`) and its bodies' rows, in place."""
     _, pair, normals, _, first, points, _ = table

@@ -9,7 +9,7 @@ from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, INV_MASS, X0, Y0
 from polygolf.engine.physics.collide import max_separation
 from polygolf.engine.physics.geometry import pose_piece
 from polygolf.engine.physics.grid import body_pairs, no_fat_pairs, overlapping
-from polygolf.engine.physics.jit import inlined_kernel, kernel, leaf_kernel
+from polygolf.engine.physics.jit import counted_kernel, kernel, leaf_kernel
 from polygolf.engine.physics.motion import rewind
 from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP, TOI_TARGET
 from polygolf.engine.physics.toi import body_pair_hits, first_wall_hits, toi_work
@@ -60,11 +60,11 @@ class CCDProcessor(esper.Processor):
                                      self.fat_boxes.of(state, len(self._seen)), inputs)
 
 
-@inlined_kernel
+@leaf_kernel
 def sweep(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple) -> int:
     """The stage on a store's state (`Shapes.packed`, `StaticWorld.packed`, `FatBoxes.of`); returns
-    how many bodies went back. (It takes nothing out of the tuples itself: numba would count a
-    reference to each array taken out, every substep; the leaves it calls do it for nothing.)"""
+    how many bodies went back. (A leaf: a run of stages hands it its tuples without counting a
+    reference to each array in them, every substep; `_body_hits` counts those it takes itself.)"""
     moved, count = _sweep_walls(state, shapes, walls, fat_boxes, inputs)
     if moved and inputs[5]:  # bodies that stepped, and several of them
         count += _body_hits(state, shapes, walls, inputs)
@@ -89,7 +89,7 @@ def _rewind_hits(state: np.ndarray, shapes: tuple, inputs: tuple) -> int:
     return rewind(state, shapes[5], inputs[2])
 
 
-@kernel
+@counted_kernel
 def _body_hits(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple) -> int:
     """Pairs of bodies whose swept boxes overlap and that move fast relative to each other: each
     one's earliest impact goes into the hits (by its index in the rows); a windmill's arm that would

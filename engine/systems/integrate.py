@@ -45,13 +45,15 @@ class IntegrateProcessor(esper.Processor):
 
     def process(self) -> None:
         inputs = self.inputs()
-        integrate(self.bodies.state, self.contacts.table.ents, inputs, self.config.dt)
+        integrate(self.bodies.state, self.contacts.table.arrays, inputs, self.config.dt)
 
 
 @leaf_kernel
-def integrate(state: np.ndarray, touching: np.ndarray, inputs: tuple, dt: float) -> None:
-    """The stage on a store's state, given this substep's contacts' entity pairs (`touching`):
-    `motion.advance`, with bodies that touch each other put to rest together."""
+def integrate(state: np.ndarray, table: tuple, inputs: tuple, dt: float) -> None:
+    """The stage on a store's state, given this substep's contact table (`ContactTable.arrays`: its
+    entity pairs are the bodies touching): `motion.advance`, with bodies that touch each other put to
+    rest together."""
+    touching = table[0]
     settles, dragged, touched, lookup, island, held = inputs
     if len(touching) or touched[0]:
         for k in range(len(settles)):  # (a leaf copies element by element: numba's slice copy would need its counts)

@@ -3,7 +3,7 @@ import numpy as np
 
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics import solver
-from polygolf.engine.physics.jit import inlined_kernel
+from polygolf.engine.physics.jit import leaf_kernel
 
 
 class ResolveProcessor(esper.Processor):
@@ -27,10 +27,11 @@ class ResolveProcessor(esper.Processor):
                                                 table.arrays, self.config.dt)
 
 
-@inlined_kernel
+@leaf_kernel
 def resolve(state: np.ndarray, static: np.ndarray, inputs: tuple, table: tuple, dt: float) -> int:
-    """The stage on a store's state and a table with contacts (the caller looks first: a call with
-    nothing to solve would still count a reference to each array it is handed); `static` is the
-    static world's row. Returns how many islands were solved cold."""
+    """The stage on a store's state and a table with contacts (the caller looks first: the solve
+    would still count a reference to each array it is handed); `static` is the static world's row.
+    Returns how many islands were solved cold. (A leaf, calling the counted `solver.solve_table`: a
+    run of stages hands it the table without counting references to its arrays.)"""
     warm, iterations, position_iterations, correction, friction = inputs
     return solver.solve_table(state, static, table, warm, iterations, position_iterations, correction, dt, friction)

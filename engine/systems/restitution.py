@@ -6,7 +6,7 @@ import numpy as np
 from polygolf.engine.components import Slope
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics import solver
-from polygolf.engine.physics.jit import inlined_kernel
+from polygolf.engine.physics.jit import leaf_kernel
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 
 STEADY_MARGIN = 1.05  # approaches up to this many substeps' worth of the steadiest push are resting, not impacts
@@ -39,7 +39,7 @@ class RestitutionProcessor(esper.Processor):
             self.stats.bounces += bounce(table.store.state, self.statics.row, table.arrays, self.inputs())
 
 
-@inlined_kernel
+@leaf_kernel
 def bounce(state: np.ndarray, static: np.ndarray, table: tuple, threshold: float) -> int:
     """The stage on a store's state and a table with contacts (the caller looks first, as for
     `resolve`); `static` is the static world's row. Returns how many points bounced."""

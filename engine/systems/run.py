@@ -37,7 +37,7 @@ from polygolf.engine.physics.body import COLUMNS, BodyStore
 from polygolf.engine.physics.contact import ContactTable
 from polygolf.engine.physics.geometry import Areas
 from polygolf.engine.physics.grid import FatBoxes, no_fat_pairs
-from polygolf.engine.physics.jit import COMPILED, compiled_entry, kernel, numba, warm_up
+from polygolf.engine.physics.jit import COMPILED, compiled_entry, kernel, leaf_kernel, numba, warm_up
 from polygolf.engine.physics.motion import accelerate, drag, kinetic_energy, turn
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 from polygolf.engine.systems.broadphase import BroadphaseProcessor, pick
@@ -76,7 +76,7 @@ TABLE_STAGES = frozenset((INTEGRATE, NARROWPHASE, RESOLVE, IMPACTS, RESTITUTION,
 FINAL_ENERGY, MAX_ENERGY, MAX_RISE, NAN, MAX_PENETRATION = range(5)
 
 
-@kernel
+@leaf_kernel
 def measure_substep(state: np.ndarray, stats: np.ndarray, metrics: np.ndarray) -> None:
     """After a substep: kinetic energy (last, largest, largest rise over one substep), whether
     anything is no longer finite, and the deepest overlap since the last look (read from `stats`,
@@ -158,57 +158,61 @@ def run_stages(held: Held, substeps: int, dt: float, stats: np.ndarray, metrics:
     ball dropped into the cup (the golf rules must hear of it before the next). Returns how many
     manifolds the contact table it holds now has, and how many substeps it ran.
 
-    What it holds is taken out once, before the loops: numba counts a reference to each array taken
-    out of a structure and lets it go after, and a stage's kernel, inlined in a branch of these
-    loops, has loops of its own between the two, so they stay (taken out in each stage's branch, the
-    counts came to some 1 000 a frame of a lone ball, against about 180 a call taken out here)."""
-    codes, state, shapes, walls, fat_boxes, inputs = held.codes, held.state, held.shapes, held.walls, \
-        held.fat_boxes, held.inputs
+    What it holds is taken out once, before the loops, each stage's inputs too: numba counts a
+    reference to each array taken out of a structure or a tuple (here, not in a leaf) and lets it go
+    after, and the calls in these loops keep it from cancelling the two (taken out in each stage's
+    branch, the counts came to some 1 000 a frame of a lone ball, against about 180 a call taken out
+    here). Most stages are leaves, handed what was taken out as it is, for nothing; the broadphase and
+    the narrowphase make arrays, and are inlined."""
+    codes, state, shapes, walls, fat_boxes = held.codes, held.state, held.shapes, held.walls, held.fat_boxes
+    (integrating, pulling, sloping, sanding, icing, dragging, sweeping, picking, touching, solving, hearing, cups,
+     mills, bumpers, threshold) = held.inputs
+    rows, push, which = pulling
+    dragged, rates = dragging
+    static, dropped = walls[4], cups[4]
     candidates, table, found = held.candidates, held.table, held.found
     ran = 0
     while ran < substeps:
         for code in codes:
             if code == WINDMILL:
-                drive(state, inputs[WINDMILL])
+                drive(state, mills)
             elif code == INTEGRATE:
-                integrate(state, table[0], inputs[INTEGRATE], dt)
+                integrate(state, table, integrating, dt)
             elif code == SPIN:
                 turn(state, dt)
             elif code == GRAVITY:
-                rows, push, which = inputs[GRAVITY]
                 accelerate(state, rows, push, which, dt)
             elif code == SLOPE:
-                push_on_slopes(state, inputs[SLOPE], dt)
+                push_on_slopes(state, sloping, dt)
             elif code == SAND:
-                scale_on_surfaces(state, inputs[SAND])
+                scale_on_surfaces(state, sanding)
             elif code == ICE:
-                scale_on_surfaces(state, inputs[ICE])
+                scale_on_surfaces(state, icing)
             elif code == DRAG:
-                rows, rates = inputs[DRAG]
-                drag(state, rows, rates, dt)
+                drag(state, dragged, rates, dt)
             elif code == CCD:
-                stats[TOI_HITS] += sweep(state, shapes, walls, fat_boxes, inputs[CCD])
+                stats[TOI_HITS] += sweep(state, shapes, walls, fat_boxes, sweeping)
             elif code == BROADPHASE:
-                candidates, found = pick(state, shapes, walls, fat_boxes, inputs[BROADPHASE], found)
+                candidates, found = pick(state, shapes, walls, fat_boxes, picking, found)
             elif code == NARROWPHASE:
                 if len(candidates[0]) or len(candidates[3]) or len(table[1]):  # (else: nothing near, no table)
-                    table = touch(state, shapes, walls, inputs[NARROWPHASE], candidates, table, stats, dt)
+                    table = touch(state, shapes, walls, touching, candidates, table, stats, dt)
             elif code == RESOLVE:
                 if len(table[1]):
-                    stats[COLD_RESTARTS] += resolve(state, walls[4], inputs[RESOLVE], table, dt)
+                    stats[COLD_RESTARTS] += resolve(state, static, solving, table, dt)
             elif code == IMPACTS:
-                hear(table, inputs[IMPACTS])
+                hear(table, hearing)
             elif code == CUP:
-                drop(state, inputs[CUP])
+                drop(state, cups)
             elif code == BUMPER:
-                kick(state, table, inputs[BUMPER], dt)
+                kick(state, table, bumpers, dt)
             elif code == RESTITUTION:
                 if len(table[1]):
-                    stats[BOUNCES] += bounce(state, walls[4], table, inputs[RESTITUTION])
+                    stats[BOUNCES] += bounce(state, static, table, threshold)
         if measure:
             measure_substep(state, stats, metrics)
         ran += 1
-        if inputs[CUP][4][0] > 0:
+        if dropped[0] > 0:
             break  # a ball dropped
     held.candidates, held.table, held.found = candidates, table, found
     return len(table[1]), ran
@@ -382,7 +386,7 @@ def _warm() -> None:
 def _warm_alone() -> None:
     """Each stage's kernel on its own, as its processor calls it (a profile, a processor alone)."""
     table, candidates, shapes, walls, state, dt, stats, fat_boxes, found = _empty_world()
-    integrate(state, table[0], IDLE[INTEGRATE], dt)
+    integrate(state, table, IDLE[INTEGRATE], dt)
     push_on_slopes(state, IDLE[SLOPE], dt)
     scale_on_surfaces(state, IDLE[SAND])
     sweep(state, shapes, walls, fat_boxes, IDLE[CCD])

@@ -83,6 +83,23 @@ def test_balls_of_a_fan_that_meet_the_arm_together_end_as_each_alone(courses):
     assert alone.rest == _alone(windmill, DEFAULT_BALL, a, "fast")[0]
 
 
+def test_a_ball_heading_for_a_wall_it_does_not_lie_against_stalls_no_windmill(courses):
+    """QA: on the Gauntlet a fast star met the windmill's arm 15 cm from a wall; the stall test posed
+    the arm at the impact but the ball where its step ended, counted the ball as lying against the
+    wall, and stalled the windmill for the substep, for every ball of the fan: a shot beside it
+    ended 11 m from where it ends alone. Both are now posed at the impact."""
+    hole = find_course(courses, "hazards").holes[8]  # The Gauntlet
+    star = ShapeSpec(star=(8, 3), radius=hole.library.ball.radius)
+    a = Shot((12.513236267723691, 1.733500463599217), (-2.817615080821704, 1.0300705103662087),
+             (0.0923041139766051, 0.19825339704624473), 3.784485760103234)
+    b = Shot((5.535675765194628, 4.035494887690328), (4.567220573270582, -2.0348209344052695),
+             (-0.03289586625495772, 0.16617068132120294), 3.9042976931596676)
+    windmills = [0.14489217581844213]
+    alone = simulate_shots(hole, [a], "fast", shape=star, max_seconds=8.0, windmills=windmills)[0]
+    beside = simulate_shots(hole, [a, b], "fast", shape=star, max_seconds=8.0, windmills=windmills)[0]
+    assert (beside.rest, beside.angle, beside.seconds) == (alone.rest, alone.angle, alone.seconds)
+
+
 def test_a_planned_putt_drops_and_says_when(courses):
     hole = find_course(courses, "meadow").holes[0]  # Straight: the cup is in line with the tee
     origin, arrow = golfer_for(hole).plan(hole.layout.tee)

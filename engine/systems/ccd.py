@@ -187,12 +187,16 @@ def _pinched(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first: np.n
     """Whether the arm (shape `arm`), meeting the ball (shape `ball`) at fraction `t` of the
     substep, drives it into a wall it lies against (within the contact margin): the push (the
     separating axis between arm and ball at the impact) points at least 15° into that wall's face.
-    A ball it meets along the wall, or away from one, is pushed as usual."""
+    A ball it meets along the wall, or away from one, is pushed as usual. Both are where they are at
+    the impact (QA: with the ball where its step ended, a fast ball heading for a wall 15 cm off
+    counted as lying against it, and stalled the windmill for every ball of a fan)."""
     ka, kb = rows[arm], rows[ball]
     arm_v, arm_n, arm_first = _posed(lv, ln, first, body_first, arm, state[ka, X0] + t * (state[ka, X] - state[ka, X0]),
                                      state[ka, Y0] + t * (state[ka, Y] - state[ka, Y0]),
                                      state[ka, ANGLE0] + t * (state[ka, ANGLE] - state[ka, ANGLE0]))
-    verts, normals, own_first = _posed(lv, ln, first, body_first, ball, state[kb, X], state[kb, Y], state[kb, ANGLE])
+    x, y = state[kb, X0] + t * (state[kb, X] - state[kb, X0]), state[kb, Y0] + t * (state[kb, Y] - state[kb, Y0])
+    verts, normals, own_first = _posed(lv, ln, first, body_first, ball, x, y,
+                                       state[kb, ANGLE0] + t * (state[kb, ANGLE] - state[kb, ANGLE0]))
     no_seams = np.zeros(0, dtype=np.bool_)
     best, push_x, push_y = -np.inf, 0.0, 0.0
     for i in range(len(arm_first) - 1):
@@ -208,7 +212,6 @@ def _pinched(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first: np.n
                 row = own_first[j] + face
                 best, push_x, push_y = gap, -normals[row, 0], -normals[row, 1]
     r = radius[ball] + CONTACT_MARGIN
-    x, y = state[kb, X], state[kb, Y]
     box = np.array([x - r, y - r, x + r, y + r])
     boxes, x0, y0, inv, nx, ny, cell_first, cell_items, large = grid
     for n in range(overlapping(boxes, x0, y0, inv, nx, ny, cell_first, cell_items, large, box, seen, found)):

@@ -47,7 +47,7 @@ from polygolf.engine.physics.collide import (
     kept_pairs,
 )
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable
-from polygolf.engine.physics.jit import COMPILED, counted_kernel, kernel, leaf_kernel, numba, warm_up
+from polygolf.engine.physics.jit import COMPILED, counted_kernel, inlined_kernel, kernel, leaf_kernel, numba, warm_up
 from polygolf.engine.physics.motion import wake_pairs
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 from polygolf.engine.physics.toi import pairs_apart
@@ -364,7 +364,7 @@ def _add_group(rows: np.ndarray, s: int, e: int, ea: int, eb: int, row_a: int, r
     return m, p, overlap
 
 
-@kernel
+@inlined_kernel
 def build_contacts(wall_rows: np.ndarray, near_ents: np.ndarray, near_rows: np.ndarray, near_materials: np.ndarray,
                    wall_materials: np.ndarray, wall_owner: np.ndarray, wall_index: np.ndarray,
                    pair_rows: np.ndarray, pair_first: np.ndarray, pair_ents: np.ndarray, pair_body_rows: np.ndarray,
@@ -440,7 +440,7 @@ def _compare(ids: np.ndarray, i: int, ent: int, keys: np.ndarray, p: int) -> int
     return 0
 
 
-@kernel
+@inlined_kernel
 def carry_impulses(old_ents: np.ndarray, old_first: np.ndarray, old_keys: np.ndarray, old_points: np.ndarray,
                    ents: np.ndarray, first: np.ndarray, keys: np.ndarray, points: np.ndarray,
                    threshold: float) -> int:

@@ -141,6 +141,16 @@ def inlined_leaf(fn: F) -> F:
     return compiled
 
 
+def inlined_kernel(fn: F) -> F:
+    """A kernel numba inlines where another kernel calls it: a step of the narrowphase inside
+    `contact.find_contacts`, which then hands it its arrays without counting a reference to each
+    (a kernel called counts one to each array it is handed, however it got them). Compiled on its
+    own too, for callers outside (tests, warm-ups)."""
+    if numba is None:
+        return fn
+    return numba.njit(cache=True, nogil=True, inline="always")(fn)
+
+
 def compiled_entry(fn: Callable, *args: object) -> Callable:
     """`fn`'s machine code for arguments of these types, called without numba's dispatch (which types
     every argument of every call, a structure's through Python: about a microsecond, a tenth of a

@@ -440,6 +440,41 @@ def _compare(ids: np.ndarray, i: int, ent: int, keys: np.ndarray, p: int) -> int
     return 0
 
 
+@leaf_kernel
+def _id_order(ids: np.ndarray, i: int, j: int) -> int:
+    """-1, 0 or 1 as carried id i is before, equal to or after carried id j, in lexicographic order."""
+    for c in range(KEY_COLUMNS + 1):
+        if ids[i, c] != ids[j, c]:
+            return -1 if ids[i, c] < ids[j, c] else 1
+    return 0
+
+
+@leaf_kernel
+def _sort_ids(ids: np.ndarray, order: np.ndarray, spare: np.ndarray) -> None:
+    """`order` (rows of `ids`) sorted by those rows in lexicographic order, equal ones kept in their
+    order: a bottom-up merge sort through `spare` (as long), allocating nothing (numpy's argsort,
+    once a column, made three arrays each time)."""
+    c = len(order)
+    source, target = order, spare
+    width, in_spare = 1, False
+    while width < c:
+        for lo in range(0, c, 2 * width):
+            mid, hi = min(lo + width, c), min(lo + 2 * width, c)
+            i, j = lo, mid
+            for k in range(lo, hi):
+                if j < hi and (i >= mid or _id_order(ids, source[j], source[i]) < 0):
+                    target[k] = source[j]
+                    j += 1
+                else:
+                    target[k] = source[i]
+                    i += 1
+        source, target = target, source
+        width, in_spare = 2 * width, not in_spare
+    if in_spare:  # (an odd number of passes)
+        for k in range(c):
+            order[k] = spare[k]
+
+
 @inlined_kernel
 def carry_impulses(old_ents: np.ndarray, old_first: np.ndarray, old_keys: np.ndarray, old_points: np.ndarray,
                    ents: np.ndarray, first: np.ndarray, keys: np.ndarray, points: np.ndarray,
@@ -463,13 +498,8 @@ def carry_impulses(old_ents: np.ndarray, old_first: np.ndarray, old_keys: np.nda
                 c += 1
     if c == 0:
         return 0
-    # Lexicographic order: stable sorts from the last column to the first (equal ids keep their order).
     order = np.arange(c)
-    column = np.empty(c, dtype=np.int64)
-    for col in range(KEY_COLUMNS, -1, -1):
-        for i in range(c):
-            column[i] = ids[order[i], col]
-        order = order[np.argsort(column, kind="mergesort")]
+    _sort_ids(ids, order, np.empty(c, dtype=np.int64))
     carried = 0
     for k in range(ents.shape[0]):
         for p in range(first[k], first[k + 1]):

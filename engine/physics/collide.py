@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
-from polygolf.engine.physics.jit import inlined_leaf, kernel, leaf_kernel, warm_up
+from polygolf.engine.physics.jit import inlined_kernel, inlined_leaf, leaf_kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
 from polygolf.engine.physics.toi import (
     reaches_wall,
@@ -325,7 +325,7 @@ def _any_close(wv: np.ndarray, wn: np.ndarray, wall_first: np.ndarray, which: np
     return False
 
 
-@kernel
+@inlined_kernel
 def bodies_wall_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray,
                          body_first: np.ndarray, which: np.ndarray, radius: np.ndarray, states: np.ndarray,
                          pressed: np.ndarray, near_first: np.ndarray, near: np.ndarray, walls: tuple, dt: float,
@@ -416,7 +416,7 @@ def _wall_rows(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndar
     return kept
 
 
-@kernel
+@inlined_kernel
 def bodies_pair_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first: np.ndarray,
                          pairs: np.ndarray, poses: np.ndarray, radius: np.ndarray, margin: float
                          ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -486,7 +486,7 @@ def _pair_rows(first: np.ndarray, body_first: np.ndarray, pairs: np.ndarray, pos
     return rows, t
 
 
-@kernel
+@inlined_kernel
 def kept_pairs(rows: np.ndarray, pair_first: np.ndarray, pairs: np.ndarray, apart: np.ndarray, ents: np.ndarray,
                store_rows: np.ndarray, materials: np.ndarray
                ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:

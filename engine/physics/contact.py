@@ -6,9 +6,10 @@ point between the same two bodies that shares a normal goes into one manifold, r
 points that span the contact, and the solver treats those two points as one block.
 
 `build_contacts` makes the table from the narrowphase's contact rows (`collide.ROW` columns) in one
-compiled call, `carry_impulses` warm-starts it from the last substep's table; the solver, the
-restitution phase, the bumper and the impacts stage read and write the same arrays. `ContactTable.manifolds`
-shows a table as `Manifold` objects (for tests and tools; the step never builds one), `table_of`
+compiled call, `carry_impulses` warm-starts it from the last substep's table (`find_contacts`, the
+narrowphase's whole substep, puts it into a `TableSlot`); the solver, the restitution phase, the
+bumper and the impacts stage read and write the same arrays. `ContactTable.manifolds` shows a table
+as `Manifold` objects (for tests and tools; the step never builds one), `table_of`
 makes a table of hand-made ones.
 """
 
@@ -16,7 +17,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, make_dataclass
 
 import numpy as np
 
@@ -46,7 +47,7 @@ from polygolf.engine.physics.collide import (
     kept_pairs,
 )
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable
-from polygolf.engine.physics.jit import kernel, leaf_kernel, warm_up
+from polygolf.engine.physics.jit import COMPILED, counted_kernel, inlined_kernel, kernel, leaf_kernel, numba, warm_up
 from polygolf.engine.physics.motion import wake_pairs
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 from polygolf.engine.physics.toi import pairs_apart
@@ -203,6 +204,37 @@ def table_of(manifolds: Sequence[Manifold], store: BodyStore, static: Body) -> C
                         points.reshape(-1, POINT_COLUMNS), keys.reshape(-1, KEY_COLUMNS), store, static)
 
 
+# Where `find_contacts` puts the table it makes (`TableSlot.table`, `ContactTable.arrays`): a kernel a
+# leaf may call returns no array, and the narrowphase's stage is a leaf (`systems.narrowphase.touch`),
+# which takes its tuples apart without counting a reference to each array in them.
+if COMPILED:
+    from numba.experimental import structref
+
+    @structref.register
+    class _TableSlotType(numba.types.StructRef):
+        def preprocess_fields(self, fields: tuple) -> tuple:
+            return tuple((name, numba.types.unliteral(typ)) for name, typ in fields)
+
+    class TableSlot(structref.StructRefProxy):
+        """A contact table's columns (`table`), as a kernel puts them there."""
+
+    structref.define_proxy(TableSlot, _TableSlotType, ["table"])
+else:  # (the same field, where the kernels run interpreted)
+    TableSlot = make_dataclass("TableSlot", ["table"], slots=True)
+
+
+@kernel
+def table_slot(table: tuple) -> TableSlot:
+    """A slot holding `table` (`ContactTable.arrays`), for `find_contacts` to put the next one in."""
+    return TableSlot(table)
+
+
+@kernel
+def slot_table(slot: TableSlot) -> tuple:
+    """The table a slot holds."""
+    return slot.table
+
+
 # --- the kernels ------------------------------------------------------------------------------------
 
 @leaf_kernel
@@ -332,7 +364,7 @@ def _add_group(rows: np.ndarray, s: int, e: int, ea: int, eb: int, row_a: int, r
     return m, p, overlap
 
 
-@kernel
+@inlined_kernel
 def build_contacts(wall_rows: np.ndarray, near_ents: np.ndarray, near_rows: np.ndarray, near_materials: np.ndarray,
                    wall_materials: np.ndarray, wall_owner: np.ndarray, wall_index: np.ndarray,
                    pair_rows: np.ndarray, pair_first: np.ndarray, pair_ents: np.ndarray, pair_body_rows: np.ndarray,
@@ -408,7 +440,42 @@ def _compare(ids: np.ndarray, i: int, ent: int, keys: np.ndarray, p: int) -> int
     return 0
 
 
-@kernel
+@leaf_kernel
+def _id_order(ids: np.ndarray, i: int, j: int) -> int:
+    """-1, 0 or 1 as carried id i is before, equal to or after carried id j, in lexicographic order."""
+    for c in range(KEY_COLUMNS + 1):
+        if ids[i, c] != ids[j, c]:
+            return -1 if ids[i, c] < ids[j, c] else 1
+    return 0
+
+
+@leaf_kernel
+def _sort_ids(ids: np.ndarray, order: np.ndarray, spare: np.ndarray) -> None:
+    """`order` (rows of `ids`) sorted by those rows in lexicographic order, equal ones kept in their
+    order: a bottom-up merge sort through `spare` (as long), allocating nothing (numpy's argsort,
+    once a column, made three arrays each time)."""
+    c = len(order)
+    source, target = order, spare
+    width, in_spare = 1, False
+    while width < c:
+        for lo in range(0, c, 2 * width):
+            mid, hi = min(lo + width, c), min(lo + 2 * width, c)
+            i, j = lo, mid
+            for k in range(lo, hi):
+                if j < hi and (i >= mid or _id_order(ids, source[j], source[i]) < 0):
+                    target[k] = source[j]
+                    j += 1
+                else:
+                    target[k] = source[i]
+                    i += 1
+        source, target = target, source
+        width, in_spare = 2 * width, not in_spare
+    if in_spare:  # (an odd number of passes)
+        for k in range(c):
+            order[k] = spare[k]
+
+
+@inlined_kernel
 def carry_impulses(old_ents: np.ndarray, old_first: np.ndarray, old_keys: np.ndarray, old_points: np.ndarray,
                    ents: np.ndarray, first: np.ndarray, keys: np.ndarray, points: np.ndarray,
                    threshold: float) -> int:
@@ -431,13 +498,8 @@ def carry_impulses(old_ents: np.ndarray, old_first: np.ndarray, old_keys: np.nda
                 c += 1
     if c == 0:
         return 0
-    # Lexicographic order: stable sorts from the last column to the first (equal ids keep their order).
     order = np.arange(c)
-    column = np.empty(c, dtype=np.int64)
-    for col in range(KEY_COLUMNS, -1, -1):
-        for i in range(c):
-            column[i] = ids[order[i], col]
-        order = order[np.argsort(column, kind="mergesort")]
+    _sort_ids(ids, order, np.empty(c, dtype=np.int64))
     carried = 0
     for k in range(ents.shape[0]):
         for p in range(first[k], first[k + 1]):
@@ -475,22 +537,23 @@ def nothing_to_touch(state: np.ndarray, shapes: tuple, walls: tuple, candidates:
     return True
 
 
-@kernel
-def find_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
-                  state: np.ndarray, store_rows: np.ndarray, radius: np.ndarray, materials: np.ndarray,
-                  ents: np.ndarray, lookup: np.ndarray, pair_ents: np.ndarray, near_ents: np.ndarray,
-                  near_first: np.ndarray, near_found: np.ndarray, walls: tuple, wall_materials: np.ndarray,
-                  wall_owner: np.ndarray, wall_index: np.ndarray, static: np.ndarray, dt: float, margin: float,
-                  ngs: bool, deepest: float, old_ents: np.ndarray, old_first: np.ndarray, old_keys: np.ndarray,
-                  old_points: np.ndarray, warm: bool, threshold: float
-                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, float]:
-    """The narrowphase in one call: this substep's contact table (`build_contacts`, columns as it
-    gives them, and the deepest overlap) for the broadphase's candidates, warm-started from the
-    last one's (`carry_impulses`, with `warm`). Bodies are shapes of a `geometry.ShapeTable` (lv ..
-    body_first) at rows `store_rows` of a `body.BodyStore` state, with bounding radii, materials and
-    entities; `lookup[entity]` is its shape. Candidates: body pairs (entities), and the bodies with
-    wall pieces near (entities, their pieces in compressed rows). `walls` is the static world's
-    `arrays`, `static` its stand-in body's row.
+@counted_kernel
+def find_contacts(slot: TableSlot, lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray,
+                  body_first: np.ndarray, state: np.ndarray, store_rows: np.ndarray, radius: np.ndarray,
+                  materials: np.ndarray, ents: np.ndarray, lookup: np.ndarray, pair_ents: np.ndarray,
+                  near_ents: np.ndarray, near_first: np.ndarray, near_found: np.ndarray, walls: tuple,
+                  wall_materials: np.ndarray, wall_owner: np.ndarray, wall_index: np.ndarray, static: np.ndarray,
+                  dt: float, margin: float, ngs: bool, deepest: float, old_ents: np.ndarray, old_first: np.ndarray,
+                  old_keys: np.ndarray, old_points: np.ndarray, warm: bool, threshold: float) -> float:
+    """The narrowphase in one call: this substep's contact table (`build_contacts`' columns and a
+    `block` of False, as `ContactTable.arrays`) put into `slot.table`, for the broadphase's
+    candidates, warm-started from the last one's (`carry_impulses`, with `warm`); returns the
+    deepest overlap of any point kept, or `deepest` if that is deeper. (A kernel a leaf may call,
+    `counted_kernel`: the table goes into the slot, not back.) Bodies are shapes of a
+    `geometry.ShapeTable` (lv .. body_first) at rows `store_rows` of a `body.BodyStore` state, with
+    bounding radii, materials and entities; `lookup[entity]` is its shape. Candidates: body pairs
+    (entities), and the bodies with wall pieces near (entities, their pieces in compressed rows).
+    `walls` is the static world's `arrays`, `static` its stand-in body's row.
 
     Pairs first (their rows go after the walls', as always): a body another one presses on this
     substep can be pushed into a wall it is not moving towards yet, so its wall gaps must stay
@@ -536,14 +599,17 @@ def find_contacts(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.n
         if len(kept_ents):
             wake_pairs(state, kept_bodies)
     if not len(wall_rows) and not len(kept_ents):
-        return (kept_ents, kept_ents, np.zeros((0, MANIFOLD_COLUMNS)), zero_first, np.zeros((0, POINT_COLUMNS)),
-                np.zeros((0, KEY_COLUMNS), dtype=np.int64), deepest)
+        slot.table = (kept_ents, kept_ents, np.zeros((0, MANIFOLD_COLUMNS)), np.zeros(0, dtype=np.bool_), zero_first,
+                      np.zeros((0, POINT_COLUMNS)), np.zeros((0, KEY_COLUMNS), dtype=np.int64))
+        return deepest
     near_rows, near_materials = store_rows[near], materials[near]
-    table = build_contacts(wall_rows, near_ents, near_rows, near_materials, wall_materials, wall_owner, wall_index,
-                           kept_rows, kept_first, kept_ents, kept_bodies, kept_materials, state, static, ngs, deepest)
+    new_ents, pair, normals, new_first, points, keys, deepest = build_contacts(
+        wall_rows, near_ents, near_rows, near_materials, wall_materials, wall_owner, wall_index, kept_rows, kept_first,
+        kept_ents, kept_bodies, kept_materials, state, static, ngs, deepest)
     if warm and len(old_ents):
-        carry_impulses(old_ents, old_first, old_keys, old_points, table[0], table[3], table[5], table[4], threshold)
-    return table
+        carry_impulses(old_ents, old_first, old_keys, old_points, new_ents, new_first, keys, points, threshold)
+    slot.table = (new_ents, pair, normals, np.zeros(len(pair), dtype=np.bool_), new_first, points, keys)
+    return deepest
 
 
 @warm_up("contact table")
@@ -574,13 +640,12 @@ def _warm() -> None:
     state[:, COLUMNS.index("inv_mass")] = state[:, COLUMNS.index("mass")] = 1.0
     ents = np.array([3, 4], dtype=np.int64)
     lookup = np.array([-1, -1, -1, 0, 1], dtype=np.int64)
-    last = (np.zeros((0, 2), dtype=np.int64), np.zeros(1, dtype=np.int64), np.zeros((0, KEY_COLUMNS), dtype=np.int64),
-            np.zeros((0, POINT_COLUMNS)))
+    slot = table_slot(ContactTable.empty().arrays)
     for _ in range(2):
-        found = find_contacts(
-            table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first, state,
-            np.arange(2, dtype=np.int64), np.full(2, 0.71), np.ones((2, 2)), ents, lookup,
+        last = slot_table(slot)
+        find_contacts(
+            slot, table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach, table.body_first,
+            state, np.arange(2, dtype=np.int64), np.full(2, 0.71), np.ones((2, 2)), ents, lookup,
             np.array([[3, 4]], dtype=np.int64), ents[:1], np.array([0, 1], dtype=np.int64), np.zeros(1, dtype=np.int64),
             walls, np.ones((1, 2)), np.zeros(1, dtype=np.int64), np.zeros(1, dtype=np.int64), np.zeros(len(COLUMNS)),
-            1.0 / 240.0, 0.01, False, 0.0, *last, True, RESTITUTION_THRESHOLD)
-        last = (found[0], found[3], found[5], found[4])
+            1.0 / 240.0, 0.01, False, 0.0, last[0], last[4], last[6], last[5], True, RESTITUTION_THRESHOLD)

@@ -25,6 +25,8 @@ per piece and per point. numba refuses to compile a leaf that makes an array. A 
 *counted* kernel (`counted_kernel`: it makes arrays, but returns only numbers), which counts the
 references it takes itself: a stage whose work is mostly a leaf's (the sweep, the solver) is then a
 leaf too, and a run of stages hands it its tuples without counting a reference to each array in them.
+A stage that makes arrays (the broadphase, the narrowphase) is a leaf as well: the counted kernel it
+calls puts them into a numba structure handed in (a StructRef), where the run takes them from.
 
 Each kernel module registers a *warm-up*: a call with small, typical arguments that makes numba
 compile (or load from the cache) every kernel it defines with the argument types the engine uses.
@@ -140,8 +142,10 @@ def inlined_leaf(fn: F) -> F:
 
 
 def inlined_kernel(fn: F) -> F:
-    """A kernel numba inlines where another kernel calls it (a stage's kernel inside a run of
-    stages): compiled once as part of its caller rather than once more on its own."""
+    """A kernel numba inlines where another kernel calls it: a step of the narrowphase inside
+    `contact.find_contacts`, which then hands it its arrays without counting a reference to each
+    (a kernel called counts one to each array it is handed, however it got them). Compiled on its
+    own too, for callers outside (tests, warm-ups)."""
     if numba is None:
         return fn
     return numba.njit(cache=True, nogil=True, inline="always")(fn)

@@ -659,24 +659,30 @@ def solve_table(state: np.ndarray, static: np.ndarray, table: tuple, warm: bool,
     return cold_restarts
 
 
-@kernel
-def _body_row(state: np.ndarray, static: np.ndarray, k: int) -> np.ndarray:
-    """Body row k of a table's bodies: the store's `state`, and past its end the static world's row."""
-    return static if k == state.shape[0] else state[k]
-
-
-@counted_kernel
+@leaf_kernel
 def restitute(state: np.ndarray, static: np.ndarray, table: tuple, threshold: float) -> int:
-    """`apply_restitution` on a table's columns (`ContactTable.arrays`) and its bodies' rows, in place."""
+    """`apply_restitution` on a table's columns (`ContactTable.arrays`) and its bodies' rows, in place.
+    (A leaf: on most substeps no point bounces, and that is asked without counting a reference to
+    each of the table's arrays; `_scaled_bounces` does the rest.)"""
     _, pair, normals, _, first, points, _ = table
-    scale = _bounce_scale(state, pair, normals, first, points, threshold)
-    if scale is None:
+    if not _any_bounce(points, 0, first[pair.shape[0]], threshold):
         return 0
+    return _scaled_bounces(state, static, pair, normals, first, points, threshold)
+
+
+@leaf_kernel
+def _bounce(state: np.ndarray, static: np.ndarray, pair: np.ndarray, normals: np.ndarray, first: np.ndarray,
+            points: np.ndarray, threshold: float, scale: np.ndarray) -> int:
+    """Every bouncing point's bounce, scaled by its body's `scale` (the static world's row is the one
+    after `state`'s); returns how many bounced. (A leaf: the two body rows it takes a manifold cost
+    nothing.)"""
+    n = state.shape[0]
     bounced = 0
     for k in range(pair.shape[0]):
         nx, ny = normals[k, M_NX], normals[k, M_NY]
-        a, b = _body_row(state, static, pair[k, 0]), _body_row(state, static, pair[k, 1])
-        s = scale[pair[k, 0]] if pair[k, 0] < state.shape[0] else scale[pair[k, 1]]
+        a = static if pair[k, 0] == n else state[pair[k, 0]]
+        b = static if pair[k, 1] == n else state[pair[k, 1]]
+        s = scale[pair[k, 0]] if pair[k, 0] < n else scale[pair[k, 1]]
         for p in range(first[k], first[k + 1]):
             if not _bounces(points, p, threshold):
                 continue
@@ -701,11 +707,11 @@ def _bounces(points: np.ndarray, p: int, threshold: float) -> bool:
     return points[p, P_APPROACH] < -threshold and points[p, P_NORMAL_IMPULSE] > 0.0 and points[p, P_RESTITUTION] > 0.0
 
 
-@kernel
-def _bounce_scale(state: np.ndarray, pair: np.ndarray, normals: np.ndarray, first: np.ndarray, points: np.ndarray,
-                  threshold: float) -> np.ndarray | None:
-    """What each body's bounce is scaled by (None: no point bounces). Poisson's bounce gives every
-    point e times its compression impulse again, point by point; where points push against each
+@counted_kernel
+def _scaled_bounces(state: np.ndarray, static: np.ndarray, pair: np.ndarray, normals: np.ndarray,
+                    first: np.ndarray, points: np.ndarray, threshold: float) -> int:
+    """The bounces (`_bounce`) of a table some point of which bounces, each body's scaled. Poisson's
+    bounce gives every point e times its compression impulse again, point by point; where points push against each
     other (a body pinched in a notch or a groove) their large, nearly cancelling impulses given
     again can leave the bodies with more kinetic energy than before the impact. So in each island
     (bodies joined by this substep's contacts, which only pass energy between them or take it away)
@@ -713,8 +719,6 @@ def _bounce_scale(state: np.ndarray, pair: np.ndarray, normals: np.ndarray, firs
     more kinetic energy than before the substep's contact solve (`B_ENERGY0`): the energy after is
     quadratic in the scale. An island with a kinematic body (a windmill, which may well add energy)
     is left as it is. Unscaled, a bounce is the same floats as before this cap."""
-    if not _any_bounce(points, 0, first[pair.shape[0]], threshold):
-        return None  # (most substeps: nothing allocated)
     n = state.shape[0]
     group = np.arange(n)  # union-find over the body rows (the static world, row n, joins nothing)
     for k in range(pair.shape[0]):
@@ -777,7 +781,7 @@ def _bounce_scale(state: np.ndarray, pair: np.ndarray, normals: np.ndarray, firs
         room = lin[root] * lin[root] - 4.0 * quad[root] * (now[root] - before[root])
         s = (-lin[root] + math.sqrt(room)) / (2.0 * quad[root]) if room >= 0.0 and quad[root] > 0.0 else 0.0
         scale[j] = min(1.0, max(0.0, s))
-    return scale
+    return _bounce(state, static, pair, normals, first, points, threshold, scale)
 
 
 @leaf_kernel

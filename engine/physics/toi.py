@@ -23,7 +23,7 @@ import numpy as np
 from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, COLUMNS, INV_MASS, SPIN, VX, VY, X0, Y0, X, Y
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, norm, pose_piece
 from polygolf.engine.physics.grid import BoxGrid, FatBoxes, look_up_walls, walls_near
-from polygolf.engine.physics.jit import inlined_leaf, kernel, leaf_kernel, warm_up
+from polygolf.engine.physics.jit import inlined_kernel, inlined_leaf, kernel, leaf_kernel, warm_up
 from polygolf.engine.physics.settings import GAP_TOLERANCE
 
 MAX_ITERATIONS = 24
@@ -728,7 +728,7 @@ def pair_reaches(lva: np.ndarray, lna: np.ndarray, fa: np.ndarray, ra: np.ndarra
     return False
 
 
-@kernel
+@inlined_kernel
 def pairs_apart(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
                 pairs: np.ndarray, gaps: np.ndarray, state: np.ndarray, rows: np.ndarray, radius: np.ndarray,
                 near_walls: np.ndarray, dt: float, apart: np.ndarray, pressed: np.ndarray) -> None:

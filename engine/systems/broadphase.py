@@ -1,10 +1,12 @@
+from dataclasses import make_dataclass
+
 import esper
 import numpy as np
 
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.grid import FatPairs, body_pairs, by_entity, grow_near, start_near
-from polygolf.engine.physics.jit import inlined_kernel, leaf_kernel
+from polygolf.engine.physics.jit import COMPILED, counted_kernel, kernel, leaf_kernel, numba
 from polygolf.engine.physics.settings import CONTACT_MARGIN
 
 _NO_PAIRS = np.zeros((0, 2), dtype=np.int64)
@@ -24,19 +26,20 @@ class BroadphaseProcessor(esper.Processor):
         self._seen, self._scratch = np.zeros(walls, dtype=np.bool_), np.empty(walls, dtype=np.int64)
         self._near, self._first = np.empty(0, dtype=np.int64), np.empty(1, dtype=np.int64)
         self.found = np.empty(16, dtype=np.int64)  # grown by `pick` when it must be (so passed and given back)
+        self._both = np.empty((2, 4))  # the search's room for two boxes
         self.fat_pairs = FatPairs()
 
     def inputs(self) -> tuple:
         """What `pick` reads besides the state, the shapes, the walls, the fat boxes and the found
         walls' array: the grid query's scratch, the answer's arrays (and no pairs, to hand on when
-        there is one body), whether there are pairs to look for, whether bodies meet each other and
-        the pairs kept (`FatPairs.of`)."""
+        there is one body), whether there are pairs to look for, whether bodies meet each other, the
+        pairs kept (`FatPairs.of`) and the search's room for two boxes."""
         bodies = esper.get_components(Body, Collider)
         state, _, rows = self.shapes.current(self.bodies, esper.get_component(Body), bodies)
         if len(self._near) != len(rows):
             self._near, self._first = np.empty(len(rows), dtype=np.int64), np.empty(len(rows) + 1, dtype=np.int64)
         return (self._seen, self._scratch, self._near, self._first, _NO_PAIRS, len(bodies) > 1,
-                self.config.collide_bodies, self.fat_pairs.of(state, rows))
+                self.config.collide_bodies, self.fat_pairs.of(state, rows), self._both)
 
     def process(self) -> None:
         inputs = self.inputs()  # first: it gathers the state
@@ -46,33 +49,73 @@ class BroadphaseProcessor(esper.Processor):
                                                        self.fat_boxes.of(state, len(self._seen)), inputs, self.found)
 
 
-@inlined_kernel
+# Where `pick_into` puts what it finds (a kernel a leaf may call returns no array): the candidates
+# (`Candidates.arrays`) and the found walls' array.
+if COMPILED:
+    from numba.experimental import structref
+
+    @structref.register
+    class _PickedType(numba.types.StructRef):
+        def preprocess_fields(self, fields: tuple) -> tuple:
+            return tuple((name, numba.types.unliteral(typ)) for name, typ in fields)
+
+    class Picked(structref.StructRefProxy):
+        """The candidates `pick_into` found, and its found walls' array (grown if it had to)."""
+
+    structref.define_proxy(Picked, _PickedType, ["candidates", "found"])
+else:  # (the same fields, where the kernels run interpreted)
+    Picked = make_dataclass("Picked", ["candidates", "found"], slots=True)
+
+
+@kernel
 def pick(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple, found: np.ndarray
          ) -> tuple[tuple, np.ndarray]:
-    """The stage on a store's state (`Shapes.packed`, `StaticWorld.packed`, `FatBoxes.of`): the
-    candidates (`Candidates.arrays`: bodies with walls near, as entities; their walls in compressed
-    rows; body pairs as entities, in entity order however they were found), and `found` (grown if
-    it had to). The walls' rows are views of `first` and `found`: good until the next call."""
-    both = np.empty((2, 4))
-    q, count, total, waiting = _near(state, shapes, walls, fat_boxes, inputs, found, both)
-    if waiting:  # `found` must grow: on from where the search stopped
-        found, count = grow_near(state, shapes[5], shapes[6], CONTACT_MARGIN, walls[5], fat_boxes, inputs[0], inputs[1],
-                                 inputs[2], inputs[3], found, both, q, count, total, waiting)
-    pairs = inputs[4]  # (none)
-    if inputs[5]:  # several bodies
-        pairs = by_entity(body_pairs(state, shapes[5], shapes[6], CONTACT_MARGIN, False, inputs[6], False, True,
-                                     inputs[7]), shapes[9])
-    near, first = inputs[2], inputs[3]
-    return (shapes[9][near[:count]], first[:count + 1], found[:first[count]], pairs), found
+    """`pick_into`'s candidates and found walls' array, for a caller without a `Picked`."""
+    picked = Picked((found[:0], found[:1], found[:0], inputs[4]), found)
+    pick_into(state, shapes, walls, fat_boxes, inputs, found, picked)
+    return picked.candidates, picked.found
 
 
 @leaf_kernel
-def _near(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple, found: np.ndarray,
-          both: np.ndarray) -> tuple[int, int, int, int]:
-    """`grid.start_near` with the stage's tuples (where it stopped, how many bodies have walls near,
-    how many boxes they hold, how many wait for room in `found`: 0, none). (A leaf takes the tuples
-    apart for nothing; `pick`, inlined in every run of stages, would count a reference to each array
-    it took out, every substep.)"""
-    _, _, _, _, _, rows, radius, _, _, _, _ = shapes
-    seen, scratch, near, first, _, _, _, _ = inputs
-    return start_near(state, rows, radius, CONTACT_MARGIN, walls[5], fat_boxes, seen, scratch, near, first, found, both)
+def pick_into(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple, found: np.ndarray,
+              picked: Picked) -> bool:
+    """The stage on a store's state (`Shapes.packed`, `StaticWorld.packed`, `FatBoxes.of`): the
+    candidates (`Candidates.arrays`: bodies with walls near, as entities; their walls in compressed
+    rows; body pairs as entities, in entity order however they were found) into
+    `picked.candidates`; returns whether `found` had to grow (the grown one is `picked.found`). The
+    walls' rows are views of the `first` of `inputs` and of `found`: good until the next call. (A
+    leaf: a run of stages hands it its tuples, and it takes them apart, without counting a reference
+    to each array in them.)"""
+    _, _, _, _, _, rows, radius, _, _, ents, _ = shapes
+    seen, scratch, near, first, no_pairs, several, meet, kept, both = inputs
+    q, count, total, waiting = start_near(state, rows, radius, CONTACT_MARGIN, walls[5], fat_boxes, seen, scratch, near,
+                                          first, found, both)
+    if waiting:  # `found` must grow: on from where the search stopped
+        _grow_and_pick(picked, state, rows, radius, walls[5], fat_boxes, seen, scratch, near, first, found, both, q,
+                       count, total, waiting, ents, no_pairs, several, meet, kept)
+        return True
+    _pick(picked, state, rows, radius, ents, near, first, found, count, no_pairs, several, meet, kept)
+    return False
+
+
+@counted_kernel
+def _grow_and_pick(picked: Picked, state: np.ndarray, rows: np.ndarray, radius: np.ndarray, grid: tuple,
+                   fat_boxes: tuple, seen: np.ndarray, scratch: np.ndarray, near: np.ndarray, first: np.ndarray,
+                   found: np.ndarray, both: np.ndarray, q: int, count: int, total: int, waiting: int, ents: np.ndarray,
+                   no_pairs: np.ndarray, several: bool, meet: bool, kept: tuple) -> None:
+    """`pick_into`'s search on from where it stopped, into a `found` that grows (`grid.grow_near`)."""
+    found, count = grow_near(state, rows, radius, CONTACT_MARGIN, grid, fat_boxes, seen, scratch, near, first, found,
+                             both, q, count, total, waiting)
+    picked.found = found
+    _pick(picked, state, rows, radius, ents, near, first, found, count, no_pairs, several, meet, kept)
+
+
+@counted_kernel
+def _pick(picked: Picked, state: np.ndarray, rows: np.ndarray, radius: np.ndarray, ents: np.ndarray,
+          near: np.ndarray, first: np.ndarray, found: np.ndarray, count: int, no_pairs: np.ndarray, several: bool,
+          meet: bool, kept: tuple) -> None:
+    """`pick_into`'s candidates, once the search has found the walls near `count` bodies."""
+    pairs = no_pairs
+    if several:
+        pairs = by_entity(body_pairs(state, rows, radius, CONTACT_MARGIN, False, meet, False, True, kept), ents)
+    picked.candidates = (ents[near[:count]], first[:count + 1], found[:first[count]], pairs)

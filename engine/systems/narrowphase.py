@@ -5,15 +5,8 @@ import numpy as np
 from polygolf.engine.components import Collider
 from polygolf.engine.components.resources import NO_CONTACTS, PENETRATION, Resources
 from polygolf.engine.physics.body import Body, BodyStore
-from polygolf.engine.physics.contact import (
-    KEY_COLUMNS,
-    MANIFOLD_COLUMNS,
-    POINT_COLUMNS,
-    ContactTable,
-    find_contacts,
-    nothing_to_touch,
-)
-from polygolf.engine.physics.jit import inlined_kernel
+from polygolf.engine.physics.contact import ContactTable, TableSlot, find_contacts, nothing_to_touch
+from polygolf.engine.physics.jit import kernel, leaf_kernel
 from polygolf.engine.physics.settings import CONTACT_MARGIN, RESTITUTION_THRESHOLD
 
 
@@ -58,26 +51,34 @@ def contact_table(columns: tuple, store: BodyStore, static: Body) -> ContactTabl
     return ContactTable(*columns, store, static) if len(columns[0]) else NO_CONTACTS
 
 
-@inlined_kernel
-def touch(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple, candidates: tuple, old: tuple,
-          stats: np.ndarray, dt: float) -> tuple:
+@leaf_kernel
+def touch_into(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple, candidates: tuple, old: tuple,
+               stats: np.ndarray, dt: float, slot: TableSlot) -> bool:
     """The stage on a store's state (`Shapes.packed`, `StaticWorld.packed`): the new table's
     columns (`ContactTable.arrays`) for the candidates (`Candidates.arrays`), warm-started from the
-    old ones; the deepest overlap goes into `stats`."""
-    near, near_first, near_found, pair_ents = candidates
-    if not len(near) and not len(pair_ents):  # (with no table either, the callers leave it at that)
-        return (np.zeros((0, 2), dtype=np.int64), np.zeros((0, 2), dtype=np.int64), np.zeros((0, MANIFOLD_COLUMNS)),
-                np.zeros(0, dtype=np.bool_), np.zeros(1, dtype=np.int64), np.zeros((0, POINT_COLUMNS)),
-                np.zeros((0, KEY_COLUMNS), dtype=np.int64))
+    old ones, put into `slot.table` (`contact.find_contacts`); the deepest overlap goes into
+    `stats`. Returns False if the old table stands as the new one (it is empty, and nothing is near
+    enough to touch): then the slot is not written. (A leaf: a run of stages hands it its tuples,
+    and it takes them apart, without counting a reference to each array in them.)"""
     if not len(old[1]) and nothing_to_touch(state, shapes, walls, candidates, CONTACT_MARGIN):
-        return old  # empty, as `find_contacts` would make it (without taking a hundred arrays in and out)
+        return False  # (without taking a hundred arrays in and out)
+    near, near_first, near_found, pair_ents = candidates
     lv, ln, first, reach, body_first, rows, radius, _, materials, ents, lookup = shapes
     arrays, wall_materials, owner, index, static, _ = walls
     ngs, warm = inputs
     old_ents, _, _, _, old_first, old_points, old_keys = old
-    new_ents, pair, normals, new_first, points, keys, deepest = find_contacts(
-        lv, ln, first, reach, body_first, state, rows, radius, materials, ents, lookup, pair_ents, near, near_first,
-        near_found, arrays, wall_materials, owner, index, static, dt, CONTACT_MARGIN, ngs, stats[PENETRATION],
-        old_ents, old_first, old_keys, old_points, warm, RESTITUTION_THRESHOLD)
-    stats[PENETRATION] = deepest
-    return new_ents, pair, normals, np.zeros(len(pair), dtype=np.bool_), new_first, points, keys
+    stats[PENETRATION] = find_contacts(
+        slot, lv, ln, first, reach, body_first, state, rows, radius, materials, ents, lookup, pair_ents, near,
+        near_first, near_found, arrays, wall_materials, owner, index, static, dt, CONTACT_MARGIN, ngs,
+        stats[PENETRATION], old_ents, old_first, old_keys, old_points, warm, RESTITUTION_THRESHOLD)
+    return True
+
+
+@kernel
+def touch(state: np.ndarray, shapes: tuple, walls: tuple, inputs: tuple, candidates: tuple, old: tuple,
+          stats: np.ndarray, dt: float) -> tuple:
+    """`touch_into`'s new table (or the old one, where it stands), for a caller without a slot."""
+    slot = TableSlot(old)
+    if touch_into(state, shapes, walls, inputs, candidates, old, stats, dt, slot):
+        return slot.table
+    return old

@@ -34,13 +34,13 @@ from polygolf.engine.components.resources import (
     StaticWorld,
 )
 from polygolf.engine.physics.body import COLUMNS, BodyStore
-from polygolf.engine.physics.contact import ContactTable
+from polygolf.engine.physics.contact import ContactTable, TableSlot
 from polygolf.engine.physics.geometry import Areas
 from polygolf.engine.physics.grid import FatBoxes, no_fat_pairs
 from polygolf.engine.physics.jit import COMPILED, compiled_entry, kernel, leaf_kernel, numba, warm_up
 from polygolf.engine.physics.motion import accelerate, drag, kinetic_energy, turn
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
-from polygolf.engine.systems.broadphase import BroadphaseProcessor, pick
+from polygolf.engine.systems.broadphase import BroadphaseProcessor, Picked, pick, pick_into
 from polygolf.engine.systems.bumper import BumperProcessor, kick
 from polygolf.engine.systems.ccd import CCDProcessor, sweep
 from polygolf.engine.systems.cup import CupProcessor, drop
@@ -49,7 +49,7 @@ from polygolf.engine.systems.gravity import GravityProcessor
 from polygolf.engine.systems.ice import IceProcessor
 from polygolf.engine.systems.impacts import HEARD_COLUMNS, ImpactsProcessor, hear
 from polygolf.engine.systems.integrate import IntegrateProcessor, integrate
-from polygolf.engine.systems.narrowphase import NarrowphaseProcessor, contact_table, touch
+from polygolf.engine.systems.narrowphase import NarrowphaseProcessor, contact_table, touch, touch_into
 from polygolf.engine.systems.resolve import ResolveProcessor, resolve
 from polygolf.engine.systems.restitution import RestitutionProcessor, bounce
 from polygolf.engine.systems.sand import SandProcessor
@@ -97,7 +97,8 @@ def measure_substep(state: np.ndarray, stats: np.ndarray, metrics: np.ndarray) -
 # What a run keeps between calls (`hold`), as the fields of one numba structure (a StructRef): passing
 # it costs one argument however much it holds, and numba's dispatch reads its type off the object. (It
 # was a typed list: numba hashed the list's long type at every call.)
-HELD_FIELDS = ("codes", "state", "shapes", "walls", "fat_boxes", "inputs", "candidates", "table", "found")
+HELD_FIELDS = ("codes", "state", "shapes", "walls", "fat_boxes", "inputs", "candidates", "table", "found", "slot",
+               "picked")
 
 if COMPILED:
     from numba.experimental import structref
@@ -112,7 +113,8 @@ if COMPILED:
         the walls (`StaticWorld.packed`) and their fat boxes; each stage's inputs; and what changes
         from substep to substep: the candidates (`Candidates.arrays`), the contact table
         (`ContactTable.arrays`: the next run's warm start) and the broadphase's found-walls array
-        (grown when it must be)."""
+        (grown when it must be); and where the narrowphase and the broadphase, leaves, put what they
+        make (`contact.TableSlot`, `broadphase.Picked`)."""
 
     structref.define_proxy(Held, _HeldType, list(HELD_FIELDS))
 else:  # (the same fields, where the kernels run interpreted)
@@ -123,7 +125,8 @@ else:  # (the same fields, where the kernels run interpreted)
 def hold(codes: np.ndarray, state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple,
          candidates: tuple, table: tuple, found: np.ndarray) -> Held:
     """What a run keeps between calls (`Held`)."""
-    return Held(codes, state, shapes, walls, fat_boxes, inputs, candidates, table, found)
+    return Held(codes, state, shapes, walls, fat_boxes, inputs, candidates, table, found, TableSlot(table),
+                Picked(candidates, found))
 
 
 @kernel
@@ -162,15 +165,16 @@ def run_stages(held: Held, substeps: int, dt: float, stats: np.ndarray, metrics:
     reference to each array taken out of a structure or a tuple (here, not in a leaf) and lets it go
     after, and the calls in these loops keep it from cancelling the two (taken out in each stage's
     branch, the counts came to some 1 000 a frame of a lone ball, against about 180 a call taken out
-    here). Most stages are leaves, handed what was taken out as it is, for nothing; the broadphase and
-    the narrowphase make arrays, and are inlined."""
+    here). Every stage is a leaf, handed what was taken out as it is, for nothing; the broadphase and
+    the narrowphase put the arrays they make where the run takes them from (`broadphase.Picked`,
+    `contact.TableSlot`)."""
     codes, state, shapes, walls, fat_boxes = held.codes, held.state, held.shapes, held.walls, held.fat_boxes
     (integrating, pulling, sloping, sanding, icing, dragging, sweeping, picking, touching, solving, hearing, cups,
      mills, bumpers, threshold) = held.inputs
     rows, push, which = pulling
     dragged, rates = dragging
     static, dropped = walls[4], cups[4]
-    candidates, table, found = held.candidates, held.table, held.found
+    candidates, table, found, slot, picked = held.candidates, held.table, held.found, held.slot, held.picked
     ran = 0
     while ran < substeps:
         for code in codes:
@@ -193,10 +197,13 @@ def run_stages(held: Held, substeps: int, dt: float, stats: np.ndarray, metrics:
             elif code == CCD:
                 stats[TOI_HITS] += sweep(state, shapes, walls, fat_boxes, sweeping)
             elif code == BROADPHASE:
-                candidates, found = pick(state, shapes, walls, fat_boxes, picking, found)
+                if pick_into(state, shapes, walls, fat_boxes, picking, found, picked):
+                    found = picked.found  # (grown)
+                candidates = picked.candidates
             elif code == NARROWPHASE:
                 if len(candidates[0]) or len(candidates[3]) or len(table[1]):  # (else: nothing near, no table)
-                    table = touch(state, shapes, walls, touching, candidates, table, stats, dt)
+                    if touch_into(state, shapes, walls, touching, candidates, table, stats, dt, slot):
+                        table = slot.table  # (else the table stands: empty, and nothing near enough to touch)
             elif code == RESOLVE:
                 if len(table[1]):
                     stats[COLD_RESTARTS] += resolve(state, static, solving, table, dt)
@@ -236,7 +243,7 @@ def _idle_inputs() -> tuple:
         (ints, np.zeros((0, 4))),  # drag
         (flags, ints, floats, _no_work(), np.empty((2, 4)), False, True, no_fat_pairs(), False),  # ccd
         (flags, ints, ints, np.zeros(1, dtype=np.int64), np.zeros((0, 2), dtype=np.int64), False, True,
-         no_fat_pairs()),  # broadphase
+         no_fat_pairs(), np.empty((2, 4))),  # broadphase
         (False, True),  # narrowphase
         (True, 1, 1, 0, True),  # resolve
         (flags, np.zeros((1, HEARD_COLUMNS)), np.zeros(1, dtype=np.int64)),  # impacts

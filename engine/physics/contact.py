@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field, make_dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -47,7 +47,7 @@ from polygolf.engine.physics.collide import (
     kept_pairs,
 )
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable
-from polygolf.engine.physics.jit import COMPILED, counted_kernel, inlined_kernel, kernel, leaf_kernel, numba, warm_up
+from polygolf.engine.physics.jit import counted_kernel, inlined_kernel, kernel, leaf_kernel, structure, warm_up
 from polygolf.engine.physics.motion import wake_pairs
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 from polygolf.engine.physics.toi import pairs_apart
@@ -207,20 +207,8 @@ def table_of(manifolds: Sequence[Manifold], store: BodyStore, static: Body) -> C
 # Where `find_contacts` puts the table it makes (`TableSlot.table`, `ContactTable.arrays`): a kernel a
 # leaf may call returns no array, and the narrowphase's stage is a leaf (`systems.narrowphase.touch`),
 # which takes its tuples apart without counting a reference to each array in them.
-if COMPILED:
-    from numba.experimental import structref
-
-    @structref.register
-    class _TableSlotType(numba.types.StructRef):
-        def preprocess_fields(self, fields: tuple) -> tuple:
-            return tuple((name, numba.types.unliteral(typ)) for name, typ in fields)
-
-    class TableSlot(structref.StructRefProxy):
-        """A contact table's columns (`table`), as a kernel puts them there."""
-
-    structref.define_proxy(TableSlot, _TableSlotType, ["table"])
-else:  # (the same field, where the kernels run interpreted)
-    TableSlot = make_dataclass("TableSlot", ["table"], slots=True)
+TableSlot = structure(__name__, "TableSlot", ["table"],
+                      "A contact table's columns (`table`), as a kernel puts them there.")
 
 
 @kernel

@@ -47,6 +47,7 @@ import tempfile
 import time
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager, suppress
+from dataclasses import make_dataclass
 from pathlib import Path
 from typing import TypeVar
 
@@ -149,6 +150,29 @@ def inlined_kernel(fn: F) -> F:
     if numba is None:
         return fn
     return numba.njit(cache=True, nogil=True, inline="always")(fn)
+
+
+def structure(module: str, name: str, fields: Sequence[str], doc: str) -> type:
+    """A class `name` whose objects hold `fields`, passed to a kernel as one numba structure (a
+    StructRef: one argument however much it holds, its type read off the object by numba's
+    dispatch); a slotted dataclass of the same fields where the kernels run interpreted. Its
+    numba type class is put into `module` beside it, where the cache finds it again."""
+    if not COMPILED:
+        made = make_dataclass(name, list(fields), slots=True)
+        made.__doc__ = doc
+        return made
+    from numba.experimental import structref
+
+    def preprocess_fields(self, typed: tuple) -> tuple:
+        return tuple((field, numba.types.unliteral(typ)) for field, typ in typed)
+
+    kind_name = f"_{name}Type"
+    kind = type(kind_name, (numba.types.StructRef,), {"preprocess_fields": preprocess_fields, "__module__": module,
+                                                       "__qualname__": kind_name})
+    setattr(sys.modules[module], kind_name, structref.register(kind))
+    proxy = type(name, (structref.StructRefProxy,), {"__doc__": doc, "__module__": module, "__qualname__": name})
+    structref.define_proxy(proxy, kind, list(fields))
+    return proxy
 
 
 def compiled_entry(fn: Callable, *args: object) -> Callable:

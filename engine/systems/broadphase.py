@@ -1,4 +1,3 @@
-from dataclasses import make_dataclass
 
 import esper
 import numpy as np
@@ -6,7 +5,7 @@ import numpy as np
 from polygolf.engine.components import Body, Collider
 from polygolf.engine.components.resources import Resources
 from polygolf.engine.physics.grid import FatPairs, body_pairs, by_entity, grow_near, start_near
-from polygolf.engine.physics.jit import COMPILED, counted_kernel, kernel, leaf_kernel, numba
+from polygolf.engine.physics.jit import counted_kernel, kernel, leaf_kernel, structure
 from polygolf.engine.physics.settings import CONTACT_MARGIN
 
 _NO_PAIRS = np.zeros((0, 2), dtype=np.int64)
@@ -51,20 +50,8 @@ class BroadphaseProcessor(esper.Processor):
 
 # Where `pick_into` puts what it finds (a kernel a leaf may call returns no array): the candidates
 # (`Candidates.arrays`) and the found walls' array.
-if COMPILED:
-    from numba.experimental import structref
-
-    @structref.register
-    class _PickedType(numba.types.StructRef):
-        def preprocess_fields(self, fields: tuple) -> tuple:
-            return tuple((name, numba.types.unliteral(typ)) for name, typ in fields)
-
-    class Picked(structref.StructRefProxy):
-        """The candidates `pick_into` found, and its found walls' array (grown if it had to)."""
-
-    structref.define_proxy(Picked, _PickedType, ["candidates", "found"])
-else:  # (the same fields, where the kernels run interpreted)
-    Picked = make_dataclass("Picked", ["candidates", "found"], slots=True)
+Picked = structure(__name__, "Picked", ["candidates", "found"],
+                   "The candidates `pick_into` found, and its found walls' array (grown if it had to).")
 
 
 @kernel

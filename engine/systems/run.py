@@ -18,8 +18,6 @@ of the same types, so one compiled `run_stages` serves every world.
 
 from __future__ import annotations
 
-from dataclasses import make_dataclass
-
 import esper
 import numpy as np
 
@@ -37,7 +35,7 @@ from polygolf.engine.physics.body import COLUMNS, BodyStore
 from polygolf.engine.physics.contact import ContactTable, TableSlot
 from polygolf.engine.physics.geometry import Areas
 from polygolf.engine.physics.grid import FatBoxes, no_fat_pairs
-from polygolf.engine.physics.jit import COMPILED, compiled_entry, kernel, leaf_kernel, numba, warm_up
+from polygolf.engine.physics.jit import compiled_entry, kernel, leaf_kernel, structure, warm_up
 from polygolf.engine.physics.motion import accelerate, drag, kinetic_energy, turn
 from polygolf.engine.physics.settings import RESTITUTION_THRESHOLD
 from polygolf.engine.systems.broadphase import BroadphaseProcessor, Picked, pick, pick_into
@@ -100,25 +98,12 @@ def measure_substep(state: np.ndarray, stats: np.ndarray, metrics: np.ndarray) -
 HELD_FIELDS = ("codes", "state", "shapes", "walls", "fat_boxes", "inputs", "candidates", "table", "found", "slot",
                "picked")
 
-if COMPILED:
-    from numba.experimental import structref
-
-    @structref.register
-    class _HeldType(numba.types.StructRef):
-        def preprocess_fields(self, fields: tuple) -> tuple:
-            return tuple((name, numba.types.unliteral(typ)) for name, typ in fields)
-
-    class Held(structref.StructRefProxy):
-        """A run's stage codes, a store's state; what the stages share, the shapes (`Shapes.packed`),
-        the walls (`StaticWorld.packed`) and their fat boxes; each stage's inputs; and what changes
-        from substep to substep: the candidates (`Candidates.arrays`), the contact table
-        (`ContactTable.arrays`: the next run's warm start) and the broadphase's found-walls array
-        (grown when it must be); and where the narrowphase and the broadphase, leaves, put what they
-        make (`contact.TableSlot`, `broadphase.Picked`)."""
-
-    structref.define_proxy(Held, _HeldType, list(HELD_FIELDS))
-else:  # (the same fields, where the kernels run interpreted)
-    Held = make_dataclass("Held", HELD_FIELDS, slots=True)
+Held = structure(__name__, "Held", HELD_FIELDS, """A run's stage codes, a store's state; what the stages share, the
+    shapes (`Shapes.packed`), the walls (`StaticWorld.packed`) and their fat boxes; each stage's inputs; and
+    what changes from substep to substep: the candidates (`Candidates.arrays`), the contact table
+    (`ContactTable.arrays`: the next run's warm start) and the broadphase's found-walls array (grown when it
+    must be); and where the narrowphase and the broadphase, leaves, put what they make (`contact.TableSlot`,
+    `broadphase.Picked`).""")
 
 
 @kernel

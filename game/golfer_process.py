@@ -13,10 +13,8 @@ This module imports no arcade, so the worker starts quickly and `autoplay` uses 
 
 from __future__ import annotations
 
-import math
 import multiprocessing
 import random
-from collections.abc import Sequence
 from concurrent.futures import Future, ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
@@ -26,7 +24,7 @@ from polygolf.engine.golf.play import HolePlay
 from polygolf.engine.golf.search import SearchGolfer
 from polygolf.engine.golf.shots import Shot
 from polygolf.engine.loading.scene import ShapeSpec
-from polygolf.engine.physics.polygon import Outline, Vec
+from polygolf.engine.physics.polygon import Outline, Vec, placed
 
 SEARCH_PRESET = "fast"  # the hint's and the computer's search: fast physics, as `polygolf par` proves holes
 SEARCH_EFFORT = "quick"
@@ -63,14 +61,8 @@ def question_for(hole: HolePlay, shape: ShapeSpec, skill: float = 1.0, seed: int
 def other_balls(hole: HolePlay) -> tuple[Outline, ...]:
     """The outlines, where they rest, of the balls of the players whose turn it is not and who
     are still playing the hole (a finished ball has left the green)."""
-    return tuple(outline_at(p.collider.outline, p.body.x, p.body.y, p.body.angle)
+    return tuple(placed(p.collider.outline, p.body.x, p.body.y, p.body.angle)
                  for seat, p in enumerate(hole.players) if seat != hole.turn and not p.state.finished)
-
-
-def outline_at(local: Sequence[Vec], x: float, y: float, angle: float) -> Outline:
-    """A body's outline (about its centre) at pose (x, y, angle), in world coordinates."""
-    c, s = math.cos(angle), math.sin(angle)
-    return tuple((x + c * px - s * py, y + s * px + c * py) for px, py in local)
 
 
 def origin_of(shot: Shot) -> Vec:

@@ -110,7 +110,7 @@ def layout_hole(spec: HoleSpec, lib: TileLibrary) -> HoleLayout:
         turn = math.radians(tile.rotate)
         c, s = math.cos(turn), math.sin(turn)
         for item in lib.patterns[tile.pattern]:
-            outline = tuple((cx + c * x - s * y, cy + s * x + c * y) for x, y in item.outline())
+            outline = polygon.placed(item.outline(), cx, cy, turn)
             material = Material(item.restitution, item.friction)
             if item.hazard == "wall":
                 obstacles.append((outline, material))

@@ -135,8 +135,7 @@ class BoxSpec(Strict_):
 
     def outline(self) -> list[tuple[float, float]]:
         (cx, cy), (hx, hy) = self.center, self.half
-        c, s = math.cos(math.radians(self.angle)), math.sin(math.radians(self.angle))
-        return [(cx + c * x - s * y, cy + s * x + c * y) for x, y in ((-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy))]
+        return list(polygon.placed(((-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy)), cx, cy, math.radians(self.angle)))
 
 
 class WallSpec(Strict_):

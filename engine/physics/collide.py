@@ -22,6 +22,7 @@ import numpy as np
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
 from polygolf.engine.physics.jit import inlined_kernel, inlined_leaf, leaf_kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
+from polygolf.engine.physics.settings import LINEAR_SLOP
 from polygolf.engine.physics.toi import (
     reaches_wall,
     separations_in_body_frame,
@@ -34,9 +35,8 @@ from polygolf.engine.physics.toi import (
 # the two polygons when they are nearly parallel, which would spoil warm starting.
 _REFERENCE_TOLERANCE = 5e-4
 # At a seam, the wall's face replaces A's as the reference only if it is about as near (m), or A lies
-# no deeper than this behind the wall's face line (m: the linear slop, where a resting body sinks to).
+# no deeper behind the wall's face line than the linear slop (where a resting body sinks to).
 _SEAM_SWITCH = 0.005
-_SEAM_SUNK = 0.005
 # m: rounding room for `_circle_beyond` (a vertex posed in floating point may stand a hair outside
 # its body's bounding circle).
 _CIRCLE_SLACK = 1e-9
@@ -159,7 +159,7 @@ def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndar
         count_inc = ea - sa
     i1, i2 = inc_edge, (inc_edge + 1) % count_inc
     if ref_is_a and seams and (hidden[sb + i1] or hidden[sb + i2]) and \
-            (sep_b >= sep_a - _SEAM_SWITCH or sep_b >= -_SEAM_SUNK):
+            (sep_b >= sep_a - _SEAM_SWITCH or sep_b >= -LINEAR_SLOP):
         # A's face would meet a wall corner that lies on a flat stretch of wall: the wall's own face
         # there, as near as A's or with A outside it (but for a resting body's sinking), is the true
         # surface, so it is the reference (a slanted face of A would make a ghost hit: QA, a random

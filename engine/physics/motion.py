@@ -279,6 +279,14 @@ def kinetic_energy(state: np.ndarray) -> tuple[float, bool]:
     return total, finite
 
 
+@inlined_leaf
+def pose_at(state: np.ndarray, k: int, t: float) -> tuple[float, float, float]:
+    """Body row k's pose (x, y, angle) at fraction t of its motion this substep, as the integrator
+    moves it: linearly in position and angle."""
+    return (state[k, X0] + t * (state[k, X] - state[k, X0]), state[k, Y0] + t * (state[k, Y] - state[k, Y0]),
+            state[k, ANGLE0] + t * (state[k, ANGLE] - state[k, ANGLE0]))
+
+
 @leaf_kernel
 def rewind(state: np.ndarray, rows: np.ndarray, hits: np.ndarray) -> int:
     """Each body q of `rows` with hits[q] < 1 goes back to that fraction of its motion this substep
@@ -291,9 +299,7 @@ def rewind(state: np.ndarray, rows: np.ndarray, hits: np.ndarray) -> int:
         if not t < 1.0:
             continue
         k = rows[q]
-        state[k, X] = state[k, X0] + t * (state[k, X] - state[k, X0])
-        state[k, Y] = state[k, Y0] + t * (state[k, Y] - state[k, Y0])
-        state[k, ANGLE] = state[k, ANGLE0] + t * (state[k, ANGLE] - state[k, ANGLE0])
+        state[k, X], state[k, Y], state[k, ANGLE] = pose_at(state, k, t)
         if state[k, INV_MASS] != 0.0:
             state[k, LAG] = (1.0 - t) * state[k, MOVED_FOR]
         else:

@@ -68,6 +68,12 @@ def bounding_radius(vertices: Sequence[Vec]) -> float:
     return max(math.hypot(x, y) for x, y in vertices)
 
 
+def placed(vertices: Sequence[Vec], x: float, y: float, angle: float) -> Outline:
+    """`vertices` (about their own origin) turned by `angle` (rad) and moved to (x, y)."""
+    c, s = math.cos(angle), math.sin(angle)
+    return tuple((x + c * px - s * py, y + s * px + c * py) for px, py in vertices)
+
+
 def regular_polygon(sides: int, radius: float) -> Outline:
     """Regular n-gon with its first vertex on the +x axis."""
     if not MIN_SIDES <= sides <= MAX_SIDES:

@@ -1,4 +1,3 @@
-
 import esper
 import numpy as np
 

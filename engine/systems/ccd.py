@@ -10,7 +10,7 @@ from polygolf.engine.physics.collide import max_separation
 from polygolf.engine.physics.geometry import pose_piece
 from polygolf.engine.physics.grid import body_pairs, no_fat_pairs, overlapping
 from polygolf.engine.physics.jit import counted_kernel, kernel, leaf_kernel
-from polygolf.engine.physics.motion import rewind
+from polygolf.engine.physics.motion import pose_at, rewind
 from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP, TOI_TARGET
 from polygolf.engine.physics.toi import body_pair_hits, first_wall_hits, toi_work
 
@@ -191,12 +191,10 @@ def _pinched(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first: np.n
     the impact (QA: with the ball where its step ended, a fast ball heading for a wall 15 cm off
     counted as lying against it, and stalled the windmill for every ball of a fan)."""
     ka, kb = rows[arm], rows[ball]
-    arm_v, arm_n, arm_first = _posed(lv, ln, first, body_first, arm, state[ka, X0] + t * (state[ka, X] - state[ka, X0]),
-                                     state[ka, Y0] + t * (state[ka, Y] - state[ka, Y0]),
-                                     state[ka, ANGLE0] + t * (state[ka, ANGLE] - state[ka, ANGLE0]))
-    x, y = state[kb, X0] + t * (state[kb, X] - state[kb, X0]), state[kb, Y0] + t * (state[kb, Y] - state[kb, Y0])
-    verts, normals, own_first = _posed(lv, ln, first, body_first, ball, x, y,
-                                       state[kb, ANGLE0] + t * (state[kb, ANGLE] - state[kb, ANGLE0]))
+    arm_x, arm_y, arm_angle = pose_at(state, ka, t)
+    arm_v, arm_n, arm_first = _posed(lv, ln, first, body_first, arm, arm_x, arm_y, arm_angle)
+    x, y, angle = pose_at(state, kb, t)
+    verts, normals, own_first = _posed(lv, ln, first, body_first, ball, x, y, angle)
     no_seams = np.zeros(0, dtype=np.bool_)
     best, push_x, push_y = -np.inf, 0.0, 0.0
     for i in range(len(arm_first) - 1):

@@ -276,7 +276,7 @@ def test_wall_pieces_a_body_stays_clear_of_are_passed_over_with_the_same_rows():
         pose_piece(lv, ln, v0, v1, state[0], state[1], state[2], verts[v0:v1], normals[v0:v1])
         out = np.empty((2 * (p1 - p0) * len(pieces), ROW))
         made = wall_contacts(verts, normals, lv, ln, first[p0:p1 + 1], reach[p0:p1], *state, dt, False, walls, every,
-                             margin, out, np.empty((3, 3)), toi_work(6))
+                             every, margin, out, np.empty((3, 3)), toi_work(6))
         assert np.array_equal(batch[:, :BODY], out[:made, :BODY])
         touched += made > 0
         apart += made == 0

@@ -22,6 +22,7 @@ import numpy as np
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece
 from polygolf.engine.physics.jit import inlined_kernel, inlined_leaf, leaf_kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
+from polygolf.engine.physics.seams import PROBE
 from polygolf.engine.physics.settings import LINEAR_SLOP
 from polygolf.engine.physics.toi import (
     reaches_wall,
@@ -241,7 +242,7 @@ def collide_sets(va: np.ndarray, na: np.ndarray, fa: np.ndarray, vb: np.ndarray,
 @leaf_kernel
 def wall_contacts(va: np.ndarray, na: np.ndarray, shape_verts: np.ndarray, shape_normals: np.ndarray,
                   fa: np.ndarray, reach: np.ndarray, x: float, y: float, angle: float, vx: float, vy: float,
-                  spin: float, dt: float, pressed: bool, walls: tuple, pieces: np.ndarray,
+                  spin: float, dt: float, pressed: bool, walls: tuple, pieces: np.ndarray, near: np.ndarray,
                   margin: float, out: np.ndarray, clip: np.ndarray, work: tuple) -> int:
     """A body's contacts with the wall pieces listed (`collide_sets`, wall piece by wall piece),
     keeping those of a piece only if the body is in it, or is `pressed` by another body, or would
@@ -250,7 +251,14 @@ def wall_contacts(va: np.ndarray, na: np.ndarray, shape_verts: np.ndarray, shape
     unasked, took the body's next face for its normal and struck a dodecagon level with a box's top).
     `va`, `na`: the body's pieces posed at (x, y, angle); `shape_*`: the same in its own frame.
     Returns the rows kept, at the top of `out`. `clip`, `work`: scratch for `collide_convex` and the
-    time of impact (`toi.toi_work`)."""
+    time of impact (`toi.toi_work`).
+
+    A piece's face goes on across a seam in a flush neighbour (`near`: every piece near the body):
+    its contact is kept too if the body would press into a neighbour that carries that face on
+    (`_presses_on_across_seam`). A tip landing fast beside a seam would pass the first box's end
+    before it sank, while the next box was still beyond the margin: neither contact acted, and
+    continuous collision stopped the ball at the next box's hidden corner instead (a hexagon at 21
+    m/s landing 25 mm behind the same landing on one floor, its bounce and spin lost)."""
     wv, wn, wf, internal, hidden = walls
     rows = collide_sets(va, na, fa, wv, wn, wf, pieces, internal, hidden, True, margin, True, out, clip)
     kept = 0
@@ -264,13 +272,60 @@ def wall_contacts(va: np.ndarray, na: np.ndarray, shape_verts: np.ndarray, shape
             end += 1
         g = int(piece)
         if pressed or lowest <= 0.0 or reaches_wall(shape_verts, shape_normals, fa, reach, x, y, angle,
-                                                              vx, vy, spin, dt, wv, wn, wf[g], wf[g + 1], work):
+                                                    vx, vy, spin, dt, wv, wn, wf[g], wf[g + 1], work) \
+                or _presses_on_across_seam(shape_verts, shape_normals, fa, reach, x, y, angle, vx, vy, spin, dt, wv,
+                                           wn, wf, g, near, out, k, end, work):
             for r in range(k, end):
                 for c in range(ROW):  # (row by row: a leaf copies no array)
                     out[kept, c] = out[r, c]
                 kept += 1
         k = end
     return kept
+
+
+@leaf_kernel
+def _presses_on_across_seam(lv: np.ndarray, ln: np.ndarray, fa: np.ndarray, reach: np.ndarray, x: float, y: float,
+                            angle: float, vx: float, vy: float, spin: float, dt: float, wv: np.ndarray,
+                            wn: np.ndarray, wf: np.ndarray, g: int, near: np.ndarray, rows: np.ndarray, k: int,
+                            end: int, work: tuple) -> bool:
+    """Whether piece g's contact rows k..end of `rows` (each on the same face of g: the reference)
+    meet a surface that goes on across a seam into which the body would press, moving on as it is
+    for dt (`toi.reaches_wall`): another piece of `near` with a face on the same line, facing the
+    same way, meeting or overlapping g's (within seams.PROBE). Then the rows are the contact the one
+    flat surface would give."""
+    s, e = wf[g], wf[g + 1]
+    face = -1
+    for r in range(k, end):
+        if rows[r, REF_IS_A] != 0.0 or rows[r, FACE_X] != rows[k, FACE_X] or rows[r, FACE_Y] != rows[k, FACE_Y]:
+            return False
+    for r in range(s, e):
+        if wv[r, 0] == rows[k, FACE_X] and wv[r, 1] == rows[k, FACE_Y]:
+            face = r
+    if face < 0:
+        return False
+    nx, ny = wn[face, 0], wn[face, 1]
+    offset = wv[face, 0] * nx + wv[face, 1] * ny
+    lo, hi = _face_span(wv, s, e, face, -ny, nx)
+    for m in range(len(near)):
+        h = near[m]
+        if h == g:
+            continue
+        for r in range(wf[h], wf[h + 1]):
+            if wn[r, 0] * nx + wn[r, 1] * ny < 1.0 - 1e-9 or abs(wv[r, 0] * nx + wv[r, 1] * ny - offset) > PROBE:
+                continue
+            a, b = _face_span(wv, wf[h], wf[h + 1], r, -ny, nx)
+            if a <= hi + PROBE and lo <= b + PROBE and reaches_wall(lv, ln, fa, reach, x, y, angle, vx, vy, spin, dt,
+                                                                   wv, wn, wf[h], wf[h + 1], work):
+                return True
+    return False
+
+
+@inlined_leaf
+def _face_span(wv: np.ndarray, s: int, e: int, r: int, tx: float, ty: float) -> tuple[float, float]:
+    """The face of row r of the piece of rows s..e, as an interval along (tx, ty)."""
+    n = s + (r - s + 1) % (e - s)
+    a, b = wv[r, 0] * tx + wv[r, 1] * ty, wv[n, 0] * tx + wv[n, 1] * ty
+    return min(a, b), max(a, b)
 
 
 @leaf_kernel
@@ -408,8 +463,8 @@ def _wall_rows(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndar
         v0, v1 = first[p0], first[p1]
         pose_piece(lv, ln, v0, v1, x, y, angle, verts[v0:v1], normals[v0:v1])
         made = wall_contacts(verts, normals, lv, ln, first[p0:p1 + 1], reach[p0:p1], x, y, angle, states[q, 3],
-                             states[q, 4], states[q, 5], dt, pressed[q], walls, close[:count], margin, out[kept:],
-                             clip, work)
+                             states[q, 4], states[q, 5], dt, pressed[q], walls, close[:count],
+                             near[near_first[q]:near_first[q + 1]], margin, out[kept:], clip, work)
         for k in range(kept, kept + made):
             out[k, BODY] = q
         kept += made
@@ -585,7 +640,8 @@ def _warm() -> None:
     walls = (_rows(lifted), na, first, np.zeros(4, dtype=np.bool_), np.zeros(4, dtype=np.bool_))
     for pressed in (False, True):
         wall_contacts(va, na, va, na, first, np.array([0.71]), 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0 / 240.0, pressed,
-                      walls, np.zeros(1, dtype=np.int64), 0.01, np.empty((2, ROW)), np.empty((3, 3)), toi_work(4))
+                      walls, np.zeros(1, dtype=np.int64), np.zeros(1, dtype=np.int64), 0.01, np.empty((2, ROW)),
+                      np.empty((3, 3)), toi_work(4))
     collide_sets(va, na, first, _rows(lifted), na, first, np.zeros(1, dtype=np.int64), NO_SEAMS, NO_SEAMS, False,
                  0.01, False, np.empty((2, ROW)), np.empty((3, 3)))
     table = ShapeTable.of([ConvexSet.of([square], [normals])])

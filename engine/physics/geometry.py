@@ -17,6 +17,7 @@ import numpy as np
 from polygolf.engine.physics.body import ASLEEP, COLUMNS, X, Y
 from polygolf.engine.physics.jit import inlined_leaf, leaf_kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
+from polygolf.engine.physics.seams import PROBE
 
 
 @dataclass(frozen=True, eq=False)
@@ -90,6 +91,20 @@ def pose_piece(verts: np.ndarray, normals: np.ndarray, start: int, end: int, x: 
         nx, ny = normals[start + k, 0], normals[start + k, 1]
         out_normals[k, 0] = c * nx - s * ny
         out_normals[k, 1] = s * nx + c * ny
+
+
+@inlined_leaf
+def span_on_line(wv: np.ndarray, wn: np.ndarray, s: int, e: int, nx: float, ny: float, offset: float, tx: float,
+                 ty: float) -> tuple[float, float]:
+    """The stretch, along (tx, ty), of the face of the convex piece of rows s..e that lies on the line
+    n·p = offset and faces n (within seams.PROBE), or (inf, -inf) if it has none: where a face of
+    another piece carries on across a seam."""
+    for r in range(s, e):
+        if wn[r, 0] * nx + wn[r, 1] * ny >= 1.0 - 1e-9 and abs(wv[r, 0] * nx + wv[r, 1] * ny - offset) <= PROBE:
+            n = s + (r - s + 1) % (e - s)
+            a, b = wv[r, 0] * tx + wv[r, 1] * ty, wv[n, 0] * tx + wv[n, 1] * ty
+            return min(a, b), max(a, b)
+    return math.inf, -math.inf
 
 
 @dataclass(frozen=True, eq=False)

@@ -21,9 +21,10 @@ import math
 import numpy as np
 
 from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, COLUMNS, INV_MASS, SPIN, VX, VY, X0, Y0, X, Y
-from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, norm, pose_piece
+from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, norm, pose_piece, span_on_line
 from polygolf.engine.physics.grid import BoxGrid, FatBoxes, look_up_walls, walls_near
 from polygolf.engine.physics.jit import inlined_kernel, inlined_leaf, kernel, leaf_kernel, warm_up
+from polygolf.engine.physics.seams import PROBE
 from polygolf.engine.physics.settings import GAP_TOLERANCE
 
 MAX_ITERATIONS = 24
@@ -251,7 +252,7 @@ def wall_beyond_body_faces(lv: np.ndarray, ln: np.ndarray, s: int, e: int, x: fl
 @leaf_kernel
 def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float, start: np.ndarray,
                    end: np.ndarray, wv: np.ndarray, wn: np.ndarray, ws: int, we: int, target: float, tolerance: float,
-                   allowance: float, work: tuple, sunk: float = 0.0) -> float:
+                   allowance: float, work: tuple, clearance: float = -GAP_TOLERANCE) -> float:
     """Fraction of the motion start -> end (x, y, angle) at which the piece (rows s..e, body frame)
     first comes within `target` of the wall piece (rows ws..we, world), or NO_HIT.
 
@@ -261,8 +262,8 @@ def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float,
     it): a corner swinging into the wall while another rests on it is caught, but sliding is not
     interrupted, nor is a piece stopped for touching a corner it passes level with a face (its
     vertex at the corner, the contact's normal could be either face's). `work`: scratch (`toi_work`).
-    `sunk`: how deep the body already lies in the solid this piece is part of (`first_wall_hits`):
-    stopped short of it only to keep it from sinking deeper than that into this piece."""
+    A stop short of the wall stands only if the piece would go on to come within `clearance` of it
+    (negative: sink that deep into it; see `first_wall_hits`)."""
     dx, dy, da = end[0] - start[0], end[1] - start[1], end[2] - start[2]
     turn = abs(da) * reach  # largest distance any vertex moves by rotation over the whole motion
     general_rate = math.hypot(dx, dy) + turn
@@ -291,7 +292,7 @@ def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float,
     # ball sliding level onto the next of two flush boxes, are let go (the advancement's bound for a
     # turn is the same at every point of the piece, and it knows no seams; `stays_clear` is exact).
     if t < 1.0 and target > 0.0 and stays_clear(lv, ln, s, e, start, end, wv, wn, ws, we, _NOWHERE, _NOWHERE,
-                                                -GAP_TOLERANCE - sunk, t, work[4][4]):
+                                                clearance, t, work[4][4]):
         return NO_HIT
     return t
 
@@ -512,8 +513,8 @@ def length_near(x: float, y: float, plus: float, more: float, bound: float, othe
 def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
                     state: np.ndarray, rows: np.ndarray, radius: np.ndarray, least: float, grid: tuple,
                     fat_boxes: tuple, seen: np.ndarray, found: np.ndarray, wv: np.ndarray, wn: np.ndarray,
-                    wfirst: np.ndarray, internal: np.ndarray, hidden: np.ndarray, target: float, tolerance: float,
-                    allowance: float, far: float, out: np.ndarray, work: tuple, boxes: np.ndarray) -> tuple[bool, int]:
+                    wfirst: np.ndarray, target: float, tolerance: float, allowance: float, far: float,
+                    out: np.ndarray, work: tuple, boxes: np.ndarray) -> tuple[bool, int]:
     """For each body q of `rows` (a `body.BodyStore` state, from its pose at the substep's start to
     its pose now; shape q of a `ShapeTable`, bounding radius radius[q]), the earliest impact of any
     of its pieces with the wall pieces its swept box meets in `grid` (the walls' `BoxGrid.arrays`,
@@ -529,12 +530,13 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
     A body's step is its centre's path plus its turn at its bounding radius, compared with `least`
     and `far` only (`length_near`).
 
-    A body that hits a wall piece with a seam (an `internal` edge, covered by other pieces, or a
-    `hidden` vertex; row for row with the walls' vertices) while already sunk into the walls
-    (within the slop, as a landing or a press leaves it) is stopped only if it would sink deeper
-    into that piece than it already lies: a tip sliding sunk along a floor of flush boxes meets
-    each next box's covered side face, and was put back at every seam (a triangle at 25 m/s 1.2 m
-    behind after 0.4 s, balanced)."""
+    A piece that carries on a face of another across a seam (`_level_beside`: flush boxes of a
+    floor) is one surface with it: a body already within `target` of that other piece at the start
+    is stopped by this one, as by the other, only if it would sink `allowance` into it (deeper than
+    it already lies, if in it; counted to twice the target). A tip sliding on a floor of flush
+    boxes meets each next box's covered side face: it was put back at every seam (a triangle sunk
+    within the slop, at 25 m/s, 1.25 m behind after 0.4 s at balanced; a square landing flat on its
+    corners by a seam at fast, 63 mm)."""
     out[:] = 1.0
     moved = False
     hits = 0
@@ -572,45 +574,57 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
                                    wfirst[w + 1], target, tolerance, allowance, work)
                 if t < best:
                     best = t
-        if best < 1.0:
-            sunk = min(_sunk(lv, ln, first, body_first, q, start, wv, wn, wfirst, found, count, work), 2.0 * target)
-            if sunk > GAP_TOLERANCE:  # again, the seamed pieces asked to keep the body no deeper than that
-                best = 1.0
-                for n in range(count):
-                    w = found[n]
-                    seamed = False
-                    for r in range(wfirst[w], wfirst[w + 1]):
-                        seamed |= internal[r] or hidden[r]
-                    for i in range(body_first[q], body_first[q + 1]):
-                        if wall_out_of_reach(reach[i], start, end, wv, wn, wfirst[w], wfirst[w + 1], target,
-                                             tolerance, work[2]):
-                            continue
-                        t = time_of_impact(lv, ln, first[i], first[i + 1], reach[i], start, end, wv, wn, wfirst[w],
-                                           wfirst[w + 1], target, tolerance, allowance, work,
-                                           sunk if seamed else 0.0)
-                        if t < best:
-                            best = t
+        if best < 1.0:  # again, each piece that carries on a surface the body lies by as that surface
+            best = 1.0
+            for n in range(count):
+                w = found[n]
+                level = _level_beside(lv, ln, first, body_first, q, start, wv, wn, wfirst, found, count, w, work)
+                clearance = -GAP_TOLERANCE
+                if level < target + tolerance:
+                    clearance = -allowance - min(max(-level, 0.0), 2.0 * target)
+                for i in range(body_first[q], body_first[q + 1]):
+                    if wall_out_of_reach(reach[i], start, end, wv, wn, wfirst[w], wfirst[w + 1], target, tolerance,
+                                         work[2]):
+                        continue
+                    t = time_of_impact(lv, ln, first[i], first[i + 1], reach[i], start, end, wv, wn, wfirst[w],
+                                       wfirst[w + 1], target, tolerance, allowance, work, clearance)
+                    if t < best:
+                        best = t
         out[q] = best
         if best < 1.0:
             hits += 1
     return moved, hits
 
 
-@inlined_leaf
-def _sunk(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first: np.ndarray, q: int, pose: np.ndarray,
-          wv: np.ndarray, wn: np.ndarray, wfirst: np.ndarray, found: np.ndarray, count: int, work: tuple) -> float:
-    """How deep body q (shape q, at `pose`) lies in the wall pieces `found[:count]`: the deepest
-    overlap of any of its pieces with any of them (the least separation's opposite), 0 if none."""
+@leaf_kernel
+def _level_beside(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first: np.ndarray, q: int, pose: np.ndarray,
+                  wv: np.ndarray, wn: np.ndarray, wfirst: np.ndarray, found: np.ndarray, count: int, w: int,
+                  work: tuple) -> float:
+    """How near body q (shape q, at `pose`) lies to the pieces of `found[:count]` one of whose faces
+    wall piece w carries on across a seam (on its line, facing the same way, meeting or overlapping
+    it: `geometry.span_on_line`): the least separation of any of its pieces from any of them, or
+    inf if w carries on none."""
     posed, seps = work[0], work[1]
-    deepest = 0.0
-    for n in range(count):
-        w = found[n]
+    s, e = wfirst[w], wfirst[w + 1]
+    level = math.inf
+    for m in range(count):
+        h = found[m]
+        if h == w:
+            continue
+        flush = False
+        for r in range(s, e):
+            nx, ny = wn[r, 0], wn[r, 1]
+            n = s + (r - s + 1) % (e - s)
+            a, b = -ny * wv[r, 0] + nx * wv[r, 1], -ny * wv[n, 0] + nx * wv[n, 1]
+            lo, hi = span_on_line(wv, wn, wfirst[h], wfirst[h + 1], nx, ny, wv[r, 0] * nx + wv[r, 1] * ny, -ny, nx)
+            flush |= lo <= max(a, b) + PROBE and min(a, b) <= hi + PROBE
+        if not flush:
+            continue
         for i in range(body_first[q], body_first[q + 1]):
-            separation = _separations(lv, ln, first[i], first[i + 1], pose[0], pose[1], pose[2], wv, wn, wfirst[w],
-                                      wfirst[w + 1], 0.0, 0.0, 0.0, True, posed[0], posed[1], posed[2], posed[3],
-                                      True, seps)
-            deepest = max(deepest, -separation)
-    return deepest
+            level = min(level, _separations(lv, ln, first[i], first[i + 1], pose[0], pose[1], pose[2], wv, wn,
+                                            wfirst[h], wfirst[h + 1], 0.0, 0.0, 0.0, True, posed[0], posed[1],
+                                            posed[2], posed[3], True, seps))
+    return level
 
 
 @leaf_kernel
@@ -866,8 +880,7 @@ def _warm() -> None:
     first_wall_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                     table.body_first, state, np.array([0, 1], dtype=np.int64), np.full(2, 0.71), 0.005, grid.arrays,
                     FatBoxes().of(state, 1), np.zeros(1, dtype=np.bool_), np.empty(1, dtype=np.int64), wall.verts,
-                    wall.normals, wall.first, np.zeros(4, dtype=np.bool_), np.zeros(4, dtype=np.bool_), 0.005, 0.001,
-                    0.005, 0.0025, np.empty(2), toi_work(4), np.empty((2, 4)))
+                    wall.normals, wall.first, 0.005, 0.001, 0.005, 0.0025, np.empty(2), toi_work(4), np.empty((2, 4)))
     first_pair_hit(*args, start, end, *args, still, still, 0.005, 0.001, 0.005, toi_work(4))
     body_pair_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                    table.body_first, np.array([[0, 1]], dtype=np.int64), state, np.array([0, 1], dtype=np.int64),

@@ -99,14 +99,16 @@ def _turning_rates(pa_n: np.ndarray, pb_n: np.ndarray, na_: int, nb_: int, d_x: 
 def _advance(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, start_a: np.ndarray, end_a: np.ndarray,
              lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, start_b: np.ndarray, end_b: np.ndarray,
              b_posed: bool, rates: np.ndarray, turns: float, target: float, tolerance: float, allowance: float,
-             at_start: np.ndarray, measured: bool, work: tuple, posed_at_start: bool = False) -> float:
+             at_start: np.ndarray, measured: bool, work: tuple, posed_at_start: bool = False,
+             beside: float = math.inf) -> float:
     """Conservative advancement over t in [0, 1]: the first t at which the separating-axis distance
     comes within `target` (see time_of_impact for `allowance`), or NO_HIT. Axes: B's faces first
     when B is a wall (their rates given in `rates`), else A's. The axes that turn get their rates
     from where they point at each step (`_turning_rates`; `turns`: the bound on what the pieces'
     turning adds). `at_start`: the separations at t = 0 if already `measured` (the pieces are then
     posed again, for their normals, unless the scratch still holds them so: `posed_at_start`).
-    `work`: scratch (`toi_work`).
+    `work`: scratch (`toi_work`). `beside`: the separation at t = 0 from pieces that are one surface
+    with B (`time_of_impact`), counted as B's own for whether the pieces start within `target`.
 
     Should MAX_ITERATIONS steps not decide it (a fast spin beside a face, say), a sweep that stops
     bodies short of walls (`target` > 0) is given the t reached, where the body is still safely
@@ -136,7 +138,8 @@ def _advance(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, start_a: np.nda
                              start_b[0], start_b[1], start_b[2], b_posed, pa_v, pa_n, pb_v, pb_n, b_posed, seps)
     # Already within `target` (sliding along the wall, or stopped there by the last impact): only
     # sinking `allowance` into it (deeper than it already is, if in it) counts, never just touching it.
-    level = target if worst >= target + tolerance else min(worst, target, 0.0) - allowance
+    near = min(worst, beside)
+    level = target if near >= target + tolerance else min(near, target, 0.0) - allowance
     t = 0.0
     for _ in range(MAX_ITERATIONS):
         _turning_rates(pa_n, pb_n, na_, nb_, d_x, d_y, turns, b_posed, rates)
@@ -252,7 +255,7 @@ def wall_beyond_body_faces(lv: np.ndarray, ln: np.ndarray, s: int, e: int, x: fl
 @leaf_kernel
 def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float, start: np.ndarray,
                    end: np.ndarray, wv: np.ndarray, wn: np.ndarray, ws: int, we: int, target: float, tolerance: float,
-                   allowance: float, work: tuple, clearance: float = -GAP_TOLERANCE) -> float:
+                   allowance: float, work: tuple, beside: float = math.inf) -> float:
     """Fraction of the motion start -> end (x, y, angle) at which the piece (rows s..e, body frame)
     first comes within `target` of the wall piece (rows ws..we, world), or NO_HIT.
 
@@ -262,8 +265,8 @@ def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float,
     it): a corner swinging into the wall while another rests on it is caught, but sliding is not
     interrupted, nor is a piece stopped for touching a corner it passes level with a face (its
     vertex at the corner, the contact's normal could be either face's). `work`: scratch (`toi_work`).
-    A stop short of the wall stands only if the piece would go on to come within `clearance` of it
-    (negative: sink that deep into it; see `first_wall_hits`)."""
+    `beside`: how near the piece lies to walls this one carries on across a seam (`first_wall_hits`):
+    within `target` of those, it is as if within `target` of this one."""
     dx, dy, da = end[0] - start[0], end[1] - start[1], end[2] - start[2]
     turn = abs(da) * reach  # largest distance any vertex moves by rotation over the whole motion
     general_rate = math.hypot(dx, dy) + turn
@@ -286,13 +289,13 @@ def time_of_impact(lv: np.ndarray, ln: np.ndarray, s: int, e: int, reach: float,
         return NO_HIT
     # The piece's own faces turn with it: the advancement gives them their rates as they point.
     t = _advance(lv, ln, s, e, start, end, wv, wn, ws, we, _NOWHERE, _NOWHERE, True, rates, turn, target, tolerance,
-                 allowance, rates, False, work)
+                 allowance, rates, False, work, False, beside)
     # A sweep stops a piece short of the wall only if it would go on to sink into it (deeper than the
     # gap test's tolerance, beyond every face): a tip swinging past a rail within the target, and a
     # ball sliding level onto the next of two flush boxes, are let go (the advancement's bound for a
     # turn is the same at every point of the piece, and it knows no seams; `stays_clear` is exact).
     if t < 1.0 and target > 0.0 and stays_clear(lv, ln, s, e, start, end, wv, wn, ws, we, _NOWHERE, _NOWHERE,
-                                                clearance, t, work[4][4]):
+                                                -GAP_TOLERANCE, t, work[4][4]):
         return NO_HIT
     return t
 
@@ -470,7 +473,8 @@ def _least_along(lv: np.ndarray, s: int, e: int, start: np.ndarray, end: np.ndar
 def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reach_a: float, start_a: np.ndarray,
                         end_a: np.ndarray, lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, reach_b: float,
                         start_b: np.ndarray, end_b: np.ndarray, target: float, tolerance: float, allowance: float,
-                        at_start: np.ndarray, measured: bool, work: tuple, posed_at_start: bool = False) -> float:
+                        at_start: np.ndarray, measured: bool, work: tuple, posed_at_start: bool = False,
+             beside: float = math.inf) -> float:
     """The same for two pieces that both move (two bodies): every axis turns with its body, and takes
     the relative step along it, (dA - dB)·n, plus |ΔθA|·RA + |ΔθB|·RB (`_turning_rates`).
     `at_start`: the separations at the start poses, if already `measured` (and the scratch's posed
@@ -578,16 +582,14 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
             best = 1.0
             for n in range(count):
                 w = found[n]
-                level = _level_beside(lv, ln, first, body_first, q, start, wv, wn, wfirst, found, count, w, work)
-                clearance = -GAP_TOLERANCE
-                if level < target + tolerance:
-                    clearance = -allowance - min(max(-level, 0.0), 2.0 * target)
+                beside = max(_level_beside(lv, ln, first, body_first, q, start, wv, wn, wfirst, found, count, w, work),
+                             -2.0 * target)
                 for i in range(body_first[q], body_first[q + 1]):
                     if wall_out_of_reach(reach[i], start, end, wv, wn, wfirst[w], wfirst[w + 1], target, tolerance,
                                          work[2]):
                         continue
                     t = time_of_impact(lv, ln, first[i], first[i + 1], reach[i], start, end, wv, wn, wfirst[w],
-                                       wfirst[w + 1], target, tolerance, allowance, work, clearance)
+                                       wfirst[w + 1], target, tolerance, allowance, work, beside)
                     if t < best:
                         best = t
         out[q] = best

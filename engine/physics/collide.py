@@ -309,7 +309,7 @@ def _presses_on_across_seam(lv: np.ndarray, ln: np.ndarray, fa: np.ndarray, reac
         h = near[m]
         if h == g:
             continue
-        a, b = span_on_line(wv, wn, wf[h], wf[h + 1], nx, ny, offset, -ny, nx)
+        _, a, b = span_on_line(wv, wn, wf[h], wf[h + 1], nx, ny, offset, -ny, nx)
         if a <= hi + PROBE and lo <= b + PROBE and reaches_wall(lv, ln, fa, reach, x, y, angle, vx, vy, spin, dt, wv,
                                                                wn, wf[h], wf[h + 1], work):
             return True
@@ -334,7 +334,7 @@ def _clipped_at_seam(wv: np.ndarray, wn: np.ndarray, wf: np.ndarray, g: int, nea
         h = near[m]
         if h == g:
             continue
-        a, b = span_on_line(wv, wn, wf[h], wf[h + 1], nx, ny, offset, -ny, nx)
+        _, a, b = span_on_line(wv, wn, wf[h], wf[h + 1], nx, ny, offset, -ny, nx)
         if (a < lo - PROBE <= b) if side == CLIPPED_LOW else (a <= hi + PROBE < b):
             return True
     return False

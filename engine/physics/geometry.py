@@ -95,16 +95,16 @@ def pose_piece(verts: np.ndarray, normals: np.ndarray, start: int, end: int, x: 
 
 @inlined_leaf
 def span_on_line(wv: np.ndarray, wn: np.ndarray, s: int, e: int, nx: float, ny: float, offset: float, tx: float,
-                 ty: float) -> tuple[float, float]:
-    """The stretch, along (tx, ty), of the face of the convex piece of rows s..e that lies on the line
-    n·p = offset and faces n (within seams.PROBE), or (inf, -inf) if it has none: where a face of
-    another piece carries on across a seam."""
+                 ty: float) -> tuple[int, float, float]:
+    """The face of the convex piece of rows s..e that lies on the line n·p = offset and faces n
+    (within seams.PROBE), and its stretch along (tx, ty); or (-1, inf, -inf) if it has none: where a
+    face of another piece carries on across a seam."""
     for r in range(s, e):
         if wn[r, 0] * nx + wn[r, 1] * ny >= 1.0 - 1e-9 and abs(wv[r, 0] * nx + wv[r, 1] * ny - offset) <= PROBE:
             n = s + (r - s + 1) % (e - s)
             a, b = wv[r, 0] * tx + wv[r, 1] * ty, wv[n, 0] * tx + wv[n, 1] * ty
-            return min(a, b), max(a, b)
-    return math.inf, -math.inf
+            return r, min(a, b), max(a, b)
+    return -1, math.inf, -math.inf
 
 
 @dataclass(frozen=True, eq=False)

@@ -602,10 +602,12 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
 def _level_beside(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first: np.ndarray, q: int, pose: np.ndarray,
                   wv: np.ndarray, wn: np.ndarray, wfirst: np.ndarray, found: np.ndarray, count: int, w: int,
                   work: tuple) -> float:
-    """How near body q (shape q, at `pose`) lies to the pieces of `found[:count]` one of whose faces
-    wall piece w carries on across a seam (on its line, facing the same way, meeting or overlapping
-    it: `geometry.span_on_line`): the least separation of any of its pieces from any of them, or
-    inf if w carries on none."""
+    """How near body q (shape q, at `pose`) lies to a surface that wall piece w carries on across a
+    seam: the least separation of any of its pieces from a piece of `found[:count]` with a face on
+    the line of one of w's, facing the same way, meeting or overlapping it (`geometry.span_on_line`),
+    where that face is the nearest (its axis the separating one, within seams.PROBE: a ball in a
+    box's corner lies by its inner faces, not by the outer faces it shares with the floor); inf if
+    none."""
     posed, seps = work[0], work[1]
     s, e = wfirst[w], wfirst[w + 1]
     level = math.inf
@@ -613,19 +615,19 @@ def _level_beside(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first:
         h = found[m]
         if h == w:
             continue
-        flush = False
+        hs, he = wfirst[h], wfirst[h + 1]
         for r in range(s, e):
             nx, ny = wn[r, 0], wn[r, 1]
             n = s + (r - s + 1) % (e - s)
             a, b = -ny * wv[r, 0] + nx * wv[r, 1], -ny * wv[n, 0] + nx * wv[n, 1]
-            lo, hi = span_on_line(wv, wn, wfirst[h], wfirst[h + 1], nx, ny, wv[r, 0] * nx + wv[r, 1] * ny, -ny, nx)
-            flush |= lo <= max(a, b) + PROBE and min(a, b) <= hi + PROBE
-        if not flush:
-            continue
-        for i in range(body_first[q], body_first[q + 1]):
-            level = min(level, _separations(lv, ln, first[i], first[i + 1], pose[0], pose[1], pose[2], wv, wn,
-                                            wfirst[h], wfirst[h + 1], 0.0, 0.0, 0.0, True, posed[0], posed[1],
-                                            posed[2], posed[3], True, seps))
+            face, lo, hi = span_on_line(wv, wn, hs, he, nx, ny, wv[r, 0] * nx + wv[r, 1] * ny, -ny, nx)
+            if face < 0 or lo > max(a, b) + PROBE or min(a, b) > hi + PROBE:
+                continue
+            for i in range(body_first[q], body_first[q + 1]):
+                separation = _separations(lv, ln, first[i], first[i + 1], pose[0], pose[1], pose[2], wv, wn, hs, he,
+                                          0.0, 0.0, 0.0, True, posed[0], posed[1], posed[2], posed[3], True, seps)
+                if seps[face - hs] >= separation - PROBE:  # (h's faces first)
+                    level = min(level, separation)
     return level
 
 

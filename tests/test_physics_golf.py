@@ -803,6 +803,29 @@ def test_a_landing_beside_a_seam_is_a_landing_on_one_floor(preset, sides, angle,
 
 
 @pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_a_pentagon_pressed_into_a_floor_with_a_seam_under_its_face_is_not_tipped(preset):
+    """QA's random slides: a pentagon sliding at 5 m/s on one corner, its face slanting up over a
+    seam and pressed 0.3 m/s into the floor, sank 5.2 mm (past the slop) in the first substep; the
+    box beyond the seam then took the ball's slanted face as the reference, its own face's corner
+    at the seam for the contact, the gap test dropped it, and the ball was tipped at 0.09 rad/s
+    and lifted at 9 mm/s, where one floor holds both ends of the face."""
+    ends = []
+    for walls in ([{"box": {"center": [-0.5745, -0.5], "half": [0.5, 0.5]}},
+                   {"box": {"center": [4.9255, -0.5], "half": [5.0, 0.5]}}],
+                  [{"box": {"center": [4.4255, -0.5], "half": [5.5, 0.5]}}]):
+        scene = Scene.model_validate({"name": "pressed", "gravity": [0.0, 0.0], "walls": walls, "bodies": [
+            {"name": "ball", "shape": {"regular": 5, "radius": 0.16463}, "angle": 158.207,
+             "position": [0.0, 0.13545], "velocity": [5.0, -0.3154], "restitution": 0.0, "friction": 0.0}]})
+        with build_scene(scene, preset) as sim:
+            sim.run(0.3)
+            ball = sim.body("ball")
+            ends.append((ball.x, ball.y, ball.angle, ball.vx, ball.vy, ball.spin))
+    seamed, whole = ends
+    assert whole[5] == pytest.approx(0.0, abs=1e-9)  # one floor: nothing tips it
+    assert seamed == pytest.approx(whole, abs=1e-6)
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
 @pytest.mark.parametrize("seam", [0.09, 0.11, 0.15, 0.195])
 def test_a_spinning_square_bounces_by_a_seam_as_off_one_floor(preset, seam):
     """QA: a square spinning at 10 rad/s, striking a floor at 25 m/s and 1 degree down, bounced

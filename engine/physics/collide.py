@@ -23,7 +23,7 @@ from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece, 
 from polygolf.engine.physics.jit import inlined_kernel, inlined_leaf, leaf_kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
 from polygolf.engine.physics.seams import PROBE
-from polygolf.engine.physics.settings import LINEAR_SLOP
+from polygolf.engine.physics.settings import CONTACT_MARGIN
 from polygolf.engine.physics.toi import (
     reaches_wall,
     separations_in_body_frame,
@@ -162,13 +162,15 @@ def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndar
         count_inc = ea - sa
     i1, i2 = inc_edge, (inc_edge + 1) % count_inc
     if ref_is_a and seams and (hidden[sb + i1] or hidden[sb + i2]) and \
-            (sep_b >= sep_a - _SEAM_SWITCH or sep_b >= -LINEAR_SLOP):
+            (sep_b >= sep_a - _SEAM_SWITCH or sep_b >= -CONTACT_MARGIN):
         # A's face would meet a wall corner that lies on a flat stretch of wall: the wall's own face
-        # there, as near as A's or with A outside it (but for a resting body's sinking), is the true
-        # surface, so it is the reference (a slanted face of A would make a ghost hit: QA, a random
-        # ball sliding on two feet over a seam, its face 7.7 mm above the corner, was kicked up at
-        # 1.9 m/s; a spinning square striking by a seam bounced twice as high). Otherwise the
-        # hidden corner is just left out below.
+        # there, as near as A's or with A outside it (but for a resting or pressed body's sinking, up
+        # to the contact margin), is the true surface, so it is the reference (a slanted face of A
+        # would make a ghost hit: QA, a random ball sliding on two feet over a seam, its face 7.7 mm
+        # above the corner, was kicked up at 1.9 m/s; a spinning square striking by a seam bounced
+        # twice as high; a pentagon pressed 5.2 mm into a floor, its face slanting up over a seam,
+        # lost the far end of its face's contact and was tipped at 0.09 rad/s, where the slop was
+        # the bound). Otherwise the hidden corner is just left out below.
         ref_is_a = False
         edge = edge_b
         inc_edge = _incident_edge(na, sa, ea, nb[sb + edge, 0], nb[sb + edge, 1], no_skip, -1)

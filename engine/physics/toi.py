@@ -570,28 +570,22 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
         best = 1.0
         for n in range(count):
             w = found[n]
+            beside = math.nan  # (asked once a piece, and only of a piece that stops the body)
             for i in range(body_first[q], body_first[q + 1]):
                 if wall_out_of_reach(reach[i], start, end, wv, wn, wfirst[w], wfirst[w + 1], target, tolerance,
                                      work[2]):
                     continue  # the quick answer first, without the call
                 t = time_of_impact(lv, ln, first[i], first[i + 1], reach[i], start, end, wv, wn, wfirst[w],
                                    wfirst[w + 1], target, tolerance, allowance, work)
+                if t < 1.0:  # unless the piece carries on a surface the body lies by: then as that surface
+                    if math.isnan(beside):
+                        beside = max(_level_beside(lv, ln, first, body_first, q, start, wv, wn, wfirst, found, count,
+                                                   w, work), -2.0 * target)
+                    if beside < target + tolerance:  # (else the same answer: the rule is not met)
+                        t = time_of_impact(lv, ln, first[i], first[i + 1], reach[i], start, end, wv, wn, wfirst[w],
+                                           wfirst[w + 1], target, tolerance, allowance, work, beside)
                 if t < best:
                     best = t
-        if best < 1.0:  # again, each piece that carries on a surface the body lies by as that surface
-            best = 1.0
-            for n in range(count):
-                w = found[n]
-                beside = max(_level_beside(lv, ln, first, body_first, q, start, wv, wn, wfirst, found, count, w, work),
-                             -2.0 * target)
-                for i in range(body_first[q], body_first[q + 1]):
-                    if wall_out_of_reach(reach[i], start, end, wv, wn, wfirst[w], wfirst[w + 1], target, tolerance,
-                                         work[2]):
-                        continue
-                    t = time_of_impact(lv, ln, first[i], first[i + 1], reach[i], start, end, wv, wn, wfirst[w],
-                                       wfirst[w + 1], target, tolerance, allowance, work, beside)
-                    if t < best:
-                        best = t
         out[q] = best
         if best < 1.0:
             hits += 1

@@ -303,17 +303,11 @@ def _presses_on_across_seam(lv: np.ndarray, ln: np.ndarray, fa: np.ndarray, reac
     for r in range(k, end):
         if rows[r, REF_IS_A] != 0.0 or rows[r, FACE_X] != rows[k, FACE_X] or rows[r, FACE_Y] != rows[k, FACE_Y]:
             return False
-    face = _reference_face(wv, wf, g, rows, k)
-    if face < 0:
-        return False
-    nx, ny, offset, lo, hi = _face_line(wv, wn, wf[g], wf[g + 1], face)
-    for m in range(len(near)):
-        h = near[m]
-        if h == g:
-            continue
-        _, a, b = span_on_line(wv, wn, wf[h], wf[h + 1], nx, ny, offset, -ny, nx)
+    face, nx, ny, offset, lo, hi = _reference_line(wv, wn, wf, g, rows, k)
+    for m in range(len(near) if face >= 0 else 0):
+        a, b = _carried_on(wv, wn, wf, near[m], g, nx, ny, offset)
         if a <= hi + PROBE and lo <= b + PROBE and reaches_wall(lv, ln, fa, reach, x, y, angle, vx, vy, spin, dt, wv,
-                                                               wn, wf[h], wf[h + 1], work):
+                                                               wn, wf[near[m]], wf[near[m] + 1], work):
             return True
     return False
 
@@ -328,37 +322,38 @@ def _clipped_at_seam(wv: np.ndarray, wn: np.ndarray, wf: np.ndarray, g: int, nea
     side = int(rows[r, FEATURE]) % 256
     if rows[r, REF_IS_A] != 0.0 or not (side == CLIPPED_LOW or side == CLIPPED_HIGH):
         return False
-    face = _reference_face(wv, wf, g, rows, r)
-    if face < 0:
-        return False
-    nx, ny, offset, lo, hi = _face_line(wv, wn, wf[g], wf[g + 1], face)
-    for m in range(len(near)):
-        h = near[m]
-        if h == g:
-            continue
-        _, a, b = span_on_line(wv, wn, wf[h], wf[h + 1], nx, ny, offset, -ny, nx)
+    face, nx, ny, offset, lo, hi = _reference_line(wv, wn, wf, g, rows, r)
+    for m in range(len(near) if face >= 0 else 0):
+        a, b = _carried_on(wv, wn, wf, near[m], g, nx, ny, offset)
         if (a < lo - PROBE <= b) if side == CLIPPED_LOW else (a <= hi + PROBE < b):
             return True
     return False
 
 
 @inlined_leaf
-def _reference_face(wv: np.ndarray, wf: np.ndarray, g: int, rows: np.ndarray, k: int) -> int:
-    """The row of wall piece g's face that is row k's reference (it starts at FACE_X, FACE_Y), or -1."""
-    for r in range(wf[g], wf[g + 1]):
+def _reference_line(wv: np.ndarray, wn: np.ndarray, wf: np.ndarray, g: int, rows: np.ndarray, k: int
+                    ) -> tuple[int, float, float, float, float, float]:
+    """Row k's reference face on wall piece g (the face that starts at FACE_X, FACE_Y; -1 if none):
+    its row, normal, its line's offset (n·p) and its stretch along (-ny, nx)."""
+    s, e = wf[g], wf[g + 1]
+    for r in range(s, e):
         if wv[r, 0] == rows[k, FACE_X] and wv[r, 1] == rows[k, FACE_Y]:
-            return r
-    return -1
+            nx, ny = wn[r, 0], wn[r, 1]
+            n = s + (r - s + 1) % (e - s)
+            a, b = -ny * wv[r, 0] + nx * wv[r, 1], -ny * wv[n, 0] + nx * wv[n, 1]
+            return r, nx, ny, wv[r, 0] * nx + wv[r, 1] * ny, min(a, b), max(a, b)
+    return -1, 0.0, 0.0, 0.0, 0.0, 0.0
 
 
 @inlined_leaf
-def _face_line(wv: np.ndarray, wn: np.ndarray, s: int, e: int, r: int) -> tuple[float, float, float, float, float]:
-    """Face r of the piece of rows s..e: its normal, its line's offset (n·p) and its stretch along
-    (-ny, nx)."""
-    nx, ny = wn[r, 0], wn[r, 1]
-    n = s + (r - s + 1) % (e - s)
-    a, b = -ny * wv[r, 0] + nx * wv[r, 1], -ny * wv[n, 0] + nx * wv[n, 1]
-    return nx, ny, wv[r, 0] * nx + wv[r, 1] * ny, min(a, b), max(a, b)
+def _carried_on(wv: np.ndarray, wn: np.ndarray, wf: np.ndarray, h: int, g: int, nx: float, ny: float,
+                offset: float) -> tuple[float, float]:
+    """The stretch along (-ny, nx) of wall piece h's face on g's line n·p = offset, facing n (inf,
+    -inf if it has none, or h is g itself)."""
+    if h == g:
+        return math.inf, -math.inf
+    _, a, b = span_on_line(wv, wn, wf[h], wf[h + 1], nx, ny, offset, -ny, nx)
+    return a, b
 
 
 @leaf_kernel

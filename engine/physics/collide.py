@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, pose_piece, span_on_line
+from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, face_line, pose_piece, span_on_line
 from polygolf.engine.physics.jit import inlined_kernel, inlined_leaf, leaf_kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
 from polygolf.engine.physics.seams import PROBE
@@ -36,7 +36,7 @@ from polygolf.engine.physics.toi import (
 # the two polygons when they are nearly parallel, which would spoil warm starting.
 _REFERENCE_TOLERANCE = 5e-4
 # At a seam, the wall's face replaces A's as the reference only if it is about as near (m), or A lies
-# no deeper behind the wall's face line than the linear slop (where a resting body sinks to).
+# no deeper behind the wall's face line than the contact margin (where a resting or pressed body sinks to).
 _SEAM_SWITCH = 0.005
 # m: rounding room for `_circle_beyond` (a vertex posed in floating point may stand a hair outside
 # its body's bounding circle).
@@ -335,13 +335,10 @@ def _reference_line(wv: np.ndarray, wn: np.ndarray, wf: np.ndarray, g: int, rows
                     ) -> tuple[int, float, float, float, float, float]:
     """Row k's reference face on wall piece g (the face that starts at FACE_X, FACE_Y; -1 if none):
     its row, normal, its line's offset (n·p) and its stretch along (-ny, nx)."""
-    s, e = wf[g], wf[g + 1]
-    for r in range(s, e):
+    for r in range(wf[g], wf[g + 1]):
         if wv[r, 0] == rows[k, FACE_X] and wv[r, 1] == rows[k, FACE_Y]:
-            nx, ny = wn[r, 0], wn[r, 1]
-            n = s + (r - s + 1) % (e - s)
-            a, b = -ny * wv[r, 0] + nx * wv[r, 1], -ny * wv[n, 0] + nx * wv[n, 1]
-            return r, nx, ny, wv[r, 0] * nx + wv[r, 1] * ny, min(a, b), max(a, b)
+            nx, ny, offset, lo, hi = face_line(wv, wn, wf[g], wf[g + 1], r)
+            return r, nx, ny, offset, lo, hi
     return -1, 0.0, 0.0, 0.0, 0.0, 0.0
 
 

@@ -94,6 +94,16 @@ def pose_piece(verts: np.ndarray, normals: np.ndarray, start: int, end: int, x: 
 
 
 @inlined_leaf
+def face_line(wv: np.ndarray, wn: np.ndarray, s: int, e: int, r: int) -> tuple[float, float, float, float, float]:
+    """Face r of the convex piece of rows s..e: its normal, its line's offset (n·p) and its stretch
+    along (-ny, nx)."""
+    nx, ny = wn[r, 0], wn[r, 1]
+    n = s + (r - s + 1) % (e - s)
+    a, b = -ny * wv[r, 0] + nx * wv[r, 1], -ny * wv[n, 0] + nx * wv[n, 1]
+    return nx, ny, wv[r, 0] * nx + wv[r, 1] * ny, min(a, b), max(a, b)
+
+
+@inlined_leaf
 def span_on_line(wv: np.ndarray, wn: np.ndarray, s: int, e: int, nx: float, ny: float, offset: float, tx: float,
                  ty: float) -> tuple[int, float, float]:
     """The face of the convex piece of rows s..e that lies on the line n·p = offset and faces n

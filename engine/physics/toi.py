@@ -21,7 +21,7 @@ import math
 import numpy as np
 
 from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, COLUMNS, INV_MASS, SPIN, VX, VY, X0, Y0, X, Y
-from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, norm, pose_piece, span_on_line
+from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, face_line, norm, pose_piece, span_on_line
 from polygolf.engine.physics.grid import BoxGrid, FatBoxes, look_up_walls, walls_near
 from polygolf.engine.physics.jit import inlined_kernel, inlined_leaf, kernel, leaf_kernel, warm_up
 from polygolf.engine.physics.seams import PROBE
@@ -473,8 +473,7 @@ def _least_along(lv: np.ndarray, s: int, e: int, start: np.ndarray, end: np.ndar
 def pair_time_of_impact(lva: np.ndarray, lna: np.ndarray, sa: int, ea: int, reach_a: float, start_a: np.ndarray,
                         end_a: np.ndarray, lvb: np.ndarray, lnb: np.ndarray, sb: int, eb: int, reach_b: float,
                         start_b: np.ndarray, end_b: np.ndarray, target: float, tolerance: float, allowance: float,
-                        at_start: np.ndarray, measured: bool, work: tuple, posed_at_start: bool = False,
-             beside: float = math.inf) -> float:
+                        at_start: np.ndarray, measured: bool, work: tuple, posed_at_start: bool = False) -> float:
     """The same for two pieces that both move (two bodies): every axis turns with its body, and takes
     the relative step along it, (dA - dB)·n, plus |ΔθA|·RA + |ΔθB|·RB (`_turning_rates`).
     `at_start`: the separations at the start poses, if already `measured` (and the scratch's posed
@@ -611,11 +610,9 @@ def _level_beside(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first:
             continue
         hs, he = wfirst[h], wfirst[h + 1]
         for r in range(s, e):
-            nx, ny = wn[r, 0], wn[r, 1]
-            n = s + (r - s + 1) % (e - s)
-            a, b = -ny * wv[r, 0] + nx * wv[r, 1], -ny * wv[n, 0] + nx * wv[n, 1]
-            face, lo, hi = span_on_line(wv, wn, hs, he, nx, ny, wv[r, 0] * nx + wv[r, 1] * ny, -ny, nx)
-            if face < 0 or lo > max(a, b) + PROBE or min(a, b) > hi + PROBE:
+            nx, ny, offset, own_lo, own_hi = face_line(wv, wn, s, e, r)
+            face, lo, hi = span_on_line(wv, wn, hs, he, nx, ny, offset, -ny, nx)
+            if face < 0 or lo > own_hi + PROBE or own_lo > hi + PROBE:
                 continue
             for i in range(body_first[q], body_first[q + 1]):
                 separation = _separations(lv, ln, first[i], first[i + 1], pose[0], pose[1], pose[2], wv, wn, hs, he,

@@ -26,9 +26,9 @@ from typing import NoReturn
 
 from polygolf import __version__
 from polygolf.engine.golf.search import EFFORTS
-from polygolf.engine.loading.limits import MAX_SECONDS
+from polygolf.engine.loading.limits import MAX_FILE_BYTES, MAX_SECONDS
 from polygolf.engine.loading.paths import CONTENT_DIR, content_names, content_roots, misplaced_folders, named_file
-from polygolf.engine.loading.yamlsource import ContentError
+from polygolf.engine.loading.yamlsource import ContentError, key_text, read_at_most
 from polygolf.engine.physics.presets import PRESETS
 from polygolf.game import startup
 
@@ -316,7 +316,7 @@ def _keep_aside(path: Path, text: str) -> Path | None:
     FILE.bak2, FILE.bak3...: a backup already there is kept too); returns that name, or None when
     nothing would be lost."""
     try:
-        if path.read_text(encoding="utf-8", errors="replace") == text:
+        if read_at_most(path, MAX_FILE_BYTES).decode("utf-8", errors="replace") == text:
             return None
     except FileNotFoundError:
         return None
@@ -350,9 +350,11 @@ def _generate(args: argparse.Namespace) -> int:
     except OSError as exc:
         print(f"polygolf: --out: cannot make the folder {out.parent}: {exc.strerror}", file=sys.stderr)
         return EXIT_CONTENT
-    if out.is_dir() or not os.access(out.parent, os.W_OK):  # said now, not after the proof's minutes
-        print(f"polygolf: --out: cannot write {out}: {'a folder' if out.is_dir() else 'its folder is read-only'}",
-              file=sys.stderr)
+    # Said now, not after the proof's minutes: a folder, a pipe or a device there (a FIFO would wait for a
+    # reader for ever, /dev/zero never ends), or a read-only folder.
+    if out.is_dir() or (out.exists() and not out.is_file()) or not os.access(out.parent, os.W_OK):
+        why = "a folder" if out.is_dir() else "not a regular file" if out.exists() else "its folder is read-only"
+        print(f"polygolf: --out: cannot write {out}: {why}", file=sys.stderr)
         return EXIT_CONTENT
     library = library_beside(out)  # the library `validate` and `play` will read it with
     startup.prepare_physics()
@@ -738,6 +740,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         # The reader went away (`polygolf simulate ... | head`): stop quietly, as command-line tools do.
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
+    except OSError as exc:  # a path the system refuses to look at (a name longer than it allows)
+        name = key_text(exc.filename) if exc.filename is not None else ""
+        print(f"polygolf: {name + ': ' if name else ''}{exc.strerror or exc}", file=sys.stderr)
+        return EXIT_CONTENT
 
 
 if __name__ == "__main__":

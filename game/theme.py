@@ -62,6 +62,7 @@ MUST_DIFFER = (
     ("button_text", "button"), ("button_text", "button_hover"),
 )
 MIN_CONTRAST = 50.0  # RGB distance; the shipped themes' least is 61 (Sand's obstacle on its green)
+_SEE_THROUGH = " (drawn over it, as see-through as it is)"
 
 
 def load_theme(path: str | Path) -> Theme:
@@ -70,11 +71,19 @@ def load_theme(path: str | Path) -> Theme:
     theme = validate(Theme, data, lines, path)
     problems = [ContentError(path, line_of((a,), lines), a, f"{getattr(theme, a)} is too close to {b} "
                                                              f"({getattr(theme, b)}) to tell apart: at least "
-                                                             f"{MIN_CONTRAST:g} apart in RGB, {apart:.0f} here")
-                for a, b in MUST_DIFFER if (apart := math.dist(theme.rgba(a)[:3], theme.rgba(b)[:3])) < MIN_CONTRAST]
+                                                             f"{MIN_CONTRAST:g} apart in RGB, {apart:.0f} here"
+                                                             + (_SEE_THROUGH if theme.rgba(a)[3] < 255 else ""))
+                for a, b in MUST_DIFFER if (apart := _contrast(theme.rgba(a), theme.rgba(b))) < MIN_CONTRAST]
     if problems:
         raise ContentError.of(problems)
     return theme
+
+
+def _contrast(over: RGBA, under: RGBA) -> float:
+    """RGB distance between `over` as it shows drawn on `under` (blended by its alpha: a colour with
+    alpha 00 is invisible, however far its RGB) and `under`."""
+    alpha = over[3] / 255.0
+    return math.dist([alpha * o + (1.0 - alpha) * u for o, u in zip(over[:3], under[:3])], under[:3])
 
 
 # Used only when no theme file can be read: plain, high-contrast, and obviously not a real theme.

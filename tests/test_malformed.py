@@ -59,6 +59,19 @@ CASES = [
     ("hole-merge-of-a-list", "hole", "name: M\npar: 3\ntiles:\n  - {<<: [1, 2], at: [0, 0]}\n", 4, "tiles[0]",
      "<< merges mappings only"),
     ("hole-5000-digit-par", "hole", "name: M\npar: " + "9" * 5000 + "\ntiles: []\n", 2, "par", "5000 digits: too long"),
+    # YAML's own tags on text they cannot read: PyYAML's constructors raised IndexError, KeyError or
+    # AttributeError, a traceback (QA, stop 31)
+    ("hole-int-tag-empty", "hole", _sub(HOLE, "par: 3", 'par: !!int ""'), 2, "par", "'' is not a YAML int"),
+    ("hole-float-tag-empty", "hole", _sub(HOLE, "par: 3", 'par: !!float ""'), 2, "par", "not a YAML float"),
+    ("hole-bool-tag-word", "hole", _sub(HOLE, "name: Case", "name: !!bool foo"), 1, "name", "foo is not a YAML bool"),
+    ("hole-timestamp-tag-word", "hole", _sub(HOLE, "name: Case", "name: !!timestamp foo"), 1, "name",
+     "not a YAML timestamp"),
+    ("hole-int-tag-key", "hole", _sub(HOLE, "par: 3", 'par: 3\n? !!int ""\n: 1'), 3, "(top level)", "not a YAML int"),
+    # A hex integer past Python's 4300 digits got past the digits check and the message could not be written.
+    ("hole-hex-name", "hole", _sub(HOLE, "name: Case", "name: 0x" + "f" * 4000), 1, "name",
+     "integer of about 4817 digits"),
+    # YAML 1.1's base-60 integer: PyYAML's loop is quadratic (900 KB of it took 46 s), refused unread.
+    ("hole-base-60-par", "hole", "name: M\npar: 1" + ":59" * 3000 + "\ntiles: []\n", 2, "par", "digits: too long"),
     ("hole-huge-tile-index", "hole", _sub(HOLE, "[1, 0]", "[100000000000000000, 0]"), 5, "tiles[1].at[0]",
      "less than or equal to 100"),
     ("hole-python-name-tag", "hole", _sub(HOLE, "name: Case", "name: !!python/name:os.system x"), 1, "name",
@@ -156,6 +169,11 @@ CASES = [
      "too close to green (#4f9d4a) to tell apart"),
     ("theme-ball-the-ice-s-colour", "theme", re.sub(r'\nice: "[^"]*"', '\nice: "#fdd04f"', THEME, count=1), 15, "ball",
      "too close to ice (#fdd04f)"),
+    # A colour with alpha 00 is invisible, whatever its RGB (QA: the ball, cup and text all gone).
+    ("theme-see-through-ball", "theme", _sub(THEME, 'ball: "#ffd54f"', 'ball: "#ffd54f00"'), 15, "ball",
+     "as see-through as it is"),
+    ("theme-see-through-text", "theme", _sub(THEME, 'text: "#ffffff"', 'text: "#ffffff10"'), 19, "text",
+     "too close to background"),
     ("theme-missing-colour", "theme", re.sub(r"\nwall: [^\n]*", "", THEME, count=1), 3, "wall", "missing"),
     ("theme-number-colour", "theme", _sub(THEME, '"#4f9d4a"', "123456"), 5, "green", "valid string"),
     ("theme-unknown-key", "theme", THEME + "sparkle: \"#ffffff\"\n", None, "sparkle", "unknown key"),
@@ -349,6 +367,53 @@ def test_a_pipe_or_a_device_is_refused_unread_in_one_line(tmp_path, capsys):
         err = capsys.readouterr().err.strip().splitlines()
         assert code == status and len(err) == 1, (args, err)
         assert args[-1] in err[0] and "not a regular file" in err[0], err[0]
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="FIFOs and /dev/zero are POSIX")
+def test_generate_refuses_to_write_onto_a_pipe_or_a_device_before_the_proof(tmp_path, capsys):
+    """It proved the hole, then waited for ever on the FIFO, or read /dev/zero until memory ran out
+    (the old file's text was read to keep it aside; QA, stop 31)."""
+    os.mkfifo(tmp_path / "pipe.yaml")
+    (tmp_path / "zero.yaml").symlink_to("/dev/zero")
+    for name in ("pipe.yaml", "zero.yaml"):
+        with deadline(10):
+            code = main(["generate", "--seed", "1", "--out", str(tmp_path / name)])
+        err = capsys.readouterr().err.strip().splitlines()
+        assert code == 2 and err == [f"polygolf: --out: cannot write {tmp_path / name}: not a regular file"]
+
+
+@pytest.mark.parametrize("args", [["explain", ""], ["simulate", ""], ["simulate", "a" * 300],
+                                  ["explain", "meadow:" + "9" * 300], ["validate", "a" * 300 + ".yaml"]])
+def test_an_empty_or_overlong_name_on_the_command_line_is_one_line(args, capsys):
+    """An empty path has no parts and a name longer than the system allows makes `Path.is_file`
+    raise: both were tracebacks (QA, stop 31)."""
+    with deadline(20):
+        code = _exit_code(args)
+    err = capsys.readouterr().err
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "Traceback" not in err, err
+    assert len(err) < 200
+
+
+def test_a_windmill_far_from_the_origin_is_the_windmill_its_library_accepted(tmp_path, capsys):
+    """The layout checked each placed windmill again, with a tolerance that grows with the distance
+    from the origin: a notched arm the library accepts read as crossing itself on a tile 10 km out,
+    and the error named no file (with it in the player's content, no course loaded; QA, stop 31)."""
+    from polygolf.engine.golf.holes import load_hole_file
+
+    notched = "[[-2, -0.6], [2, -0.4], [2, 0.5], [0.1, 0.5], [0, -0.49999], [-0.1, 0.5], [-2, 0.5]]"
+    library = _sub(_sub(LIBRARY, "tile_size: 6.0", "tile_size: 100.0"), "patterns:\n",
+                   f"patterns:\n  notched-mill:\n    - {{hazard: windmill, speed: 1.0, polygon: {notched}}}\n")
+    (tmp_path / "tiles.yaml").write_text(library)
+    arms = []
+    for name, first in (("near", 0), ("far", 98)):
+        (tmp_path / f"{name}.yaml").write_text(f"name: {name}\npar: 3\ntiles:\n  - {{at: [{first}, 0]}}\n"
+                                               f"  - {{at: [{first + 1}, 0], pattern: notched-mill}}\n"
+                                               f"  - {{at: [{first + 2}, 0]}}\n")
+        assert main(["validate", str(tmp_path / f"{name}.yaml")]) == 0, capsys.readouterr().err
+        arms.append(load_hole_file(tmp_path / f"{name}.yaml").layout.windmills[0])
+    (near, (nx, _), _), (far, (fx, _), _) = arms
+    assert fx - nx == pytest.approx(9800.0)
+    assert len(far) == len(near) and max(math.dist(a, b) for a, b in zip(far, near)) < 1e-9
 
 
 @pytest.fixture

@@ -117,7 +117,7 @@ def layout_hole(spec: HoleSpec, lib: TileLibrary) -> HoleLayout:
             elif item.hazard == "bumper":
                 bumpers.append((outline, material, item.kick))
             elif item.hazard == "windmill":
-                local, pivot = polygon.normalise(outline)
+                local, pivot = polygon.about_centroid(outline)  # (checked on its tile by the library)
                 windmills.append((local, pivot, item.speed))
             else:
                 push = (0.0, 0.0)

@@ -67,16 +67,24 @@ def named_file(arg: str | Path, folder: str) -> Path:
     from the source tree (`content/scenes/pile.yaml`) in the shipped content, as the README writes
     them; else the path as given (its loader says it is missing)."""
     path = Path(arg)
-    if path.is_file() or path.is_absolute():
+    if is_file(path) or path.is_absolute():
         return path
     if len(path.parts) == 1:
         name = path.name if path.suffix in (".yaml", ".yml") else f"{path.name}.yaml"
         for root in reversed(content_roots()):
-            if (root / folder / name).is_file():
+            if is_file(root / folder / name):
                 return root / folder / name
-    elif path.parts[0] == "content" and CONTENT_DIR.joinpath(*path.parts[1:]).is_file():
+    elif path.parts and path.parts[0] == "content" and is_file(CONTENT_DIR.joinpath(*path.parts[1:])):
         return CONTENT_DIR.joinpath(*path.parts[1:])
     return path
+
+
+def is_file(path: Path) -> bool:
+    """`path.is_file()`, False where asking fails (a name longer than the system allows raises)."""
+    try:
+        return path.is_file()
+    except OSError:
+        return False
 
 
 def content_names(folder: str) -> list[str]:

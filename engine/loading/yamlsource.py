@@ -14,6 +14,7 @@ standard tags are accepted.
 from __future__ import annotations
 
 import errno
+import math
 import os
 import re
 import stat
@@ -55,11 +56,11 @@ def format_loc(loc: Loc) -> str:
         if isinstance(part, int):
             out += f"[{part}]"
         else:
-            out += f".{_key_text(part)}" if out else _key_text(part)
+            out += f".{key_text(part)}" if out else key_text(part)
     return out or "(top level)"
 
 
-def _key_text(key: object) -> str:
+def key_text(key: object) -> str:
     """A key as an error line names it: as written if it is short, printable and unpadded; else quoted
     with its escapes, cut short (an unknown key can be anything: a line break, a terminal's escape
     code, a direction override, 400 KB)."""
@@ -81,6 +82,10 @@ _Loader.add_implicit_resolver("tag:yaml.org,2002:float",
 
 
 MERGE_TAG = "tag:yaml.org,2002:merge"
+_NUMBER_TAGS = {"tag:yaml.org,2002:int", "tag:yaml.org,2002:float"}
+# Python's own limit on an integer's digits: no number a content file needs comes near it, and PyYAML's
+# base-60 integers (`1:59:59:...`) cost time quadratic in their length (900 KB of them took 46 s).
+MAX_NUMBER_CHARACTERS = 4300
 
 
 class _Builder:
@@ -148,12 +153,18 @@ class _Builder:
         return items
 
     def scalar(self, node: yaml.Node, loc: Loc) -> Any:
+        number = node.tag in _NUMBER_TAGS
+        if number and len(str(node.value)) > MAX_NUMBER_CHARACTERS:  # (before PyYAML's base-60 loop: quadratic)
+            raise self.fail(node, loc, f"a number of {len(str(node.value))} digits: too long")
         try:
             return yaml.constructor.SafeConstructor().construct_object(node, deep=True)
         except (yaml.YAMLError, ValueError, OverflowError) as exc:
             if isinstance(exc, ValueError) and "integer string conversion" in str(exc):  # (Python's own words)
                 raise self.fail(node, loc, f"a number of {len(str(node.value))} digits: too long") from None
             raise self.fail(node, loc, f"not a valid value: {getattr(exc, 'problem', None) or exc}") from None
+        except Exception:  # PyYAML's constructors on a tag's bad text: `!!int ""`, `!!bool foo`, `!!timestamp x`
+            kind = node.tag.rsplit(":", 1)[-1]
+            raise self.fail(node, loc, f"not a valid value: {key_text(node.value)} is not a YAML {kind}") from None
 
 
 def _check_events(text: str, file: str) -> None:
@@ -259,9 +270,18 @@ def _message(err: dict) -> str:
     elif err["type"] == "missing":
         message = "missing (required)"
     elif "input" in err and err["type"].endswith("_type"):
-        shown = repr(err["input"])
+        shown = _shown(err["input"])
         message += f", got {shown if len(shown) <= 40 else shown[:37] + '...'}"
     return message
+
+
+def _shown(value: Any) -> str:
+    """repr(value), but an integer too long for Python to write (over 4300 digits: a hex or base-60
+    one gets past the digits check) by its size."""
+    try:
+        return repr(value)
+    except ValueError:
+        return f"an integer of about {int(value.bit_length() * math.log10(2)) + 1} digits"
 
 
 _TYPE_TAGS = {"str", "int", "float", "bool", "list", "tuple", "dict", "none", "set"}

@@ -195,7 +195,6 @@ def normalise(vertices: Sequence[Sequence[float]]) -> tuple[Outline, Vec]:
         raise PolygonError("vertices must be finite numbers")
     if len(set(pts)) != len(pts):
         raise PolygonError("polygon has repeated vertices")
-    scale = max(max(abs(x), abs(y)) for x, y in pts) or 1.0
     # Zero area for its own size, worked out about its first vertex: a half-square-metre triangle
     # 100 km out is a triangle (measured against its distance from the origin, it had "zero area").
     ox, oy = pts[0]
@@ -205,7 +204,17 @@ def normalise(vertices: Sequence[Sequence[float]]) -> tuple[Outline, Vec]:
         raise PolygonError("polygon has zero area")
     if not is_simple(pts):
         raise PolygonError("polygon edges cross each other (it must be simple)")
-    if area < 0:
+    return about_centroid(pts)
+
+
+def about_centroid(vertices: Sequence[Vec]) -> tuple[Outline, Vec]:
+    """`normalise` of an outline known to be valid (a rigid copy of one that was checked: a
+    windmill placed on its tile), without the checks: their tolerances grow with the distance from
+    the origin, and a windmill placed 10 km out read as crossing itself."""
+    pts = [(float(x), float(y)) for x, y in vertices]
+    scale = max(max(abs(x), abs(y)) for x, y in pts) or 1.0
+    ox, oy = pts[0]
+    if signed_area([(x - ox, y - oy) for x, y in pts]) < 0:
         pts.reverse()
     pts = _drop_collinear(pts, 1e-12 * scale)
     cx, cy = centroid(pts)

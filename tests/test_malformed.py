@@ -72,6 +72,8 @@ CASES = [
      "integer of about 4817 digits"),
     # YAML 1.1's base-60 integer: PyYAML's loop is quadratic (900 KB of it took 46 s), refused unread.
     ("hole-base-60-par", "hole", "name: M\npar: 1" + ":59" * 3000 + "\ntiles: []\n", 2, "par", "digits: too long"),
+    ("hole-zero-width-name", "hole", _sub(HOLE, "name: Case", 'name: "Case\\u200b"'), 1, "name",
+     "invisible character, got U+200B"),
     ("hole-huge-tile-index", "hole", _sub(HOLE, "[1, 0]", "[100000000000000000, 0]"), 5, "tiles[1].at[0]",
      "less than or equal to 100"),
     ("hole-python-name-tag", "hole", _sub(HOLE, "name: Case", "name: !!python/name:os.system x"), 1, "name",

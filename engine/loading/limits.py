@@ -129,6 +129,11 @@ def _one_line(name: str) -> str:
         raise ValueError(f"a name may not start or end with spaces, got {name!r}")
     if not any(unicodedata.category(c)[0] in "LNPS" for c in name):
         raise ValueError("a name needs a letter, digit or sign that shows")
+    # (A zero-width space or joiner at an end shows nothing: `Meadow` and `Meadow` + U+200B were two
+    # courses that looked alike, with different ids.)
+    end = next((c for c in (name[0], name[-1]) if unicodedata.category(c) == "Cf"), None)
+    if end is not None:
+        raise ValueError(f"a name may not start or end with an invisible character, got U+{ord(end):04X}")
     return name
 
 

@@ -53,6 +53,8 @@ def seconds_arg(text: str) -> float:
         raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
     if not (math.isfinite(value) and 0.0 < value <= MAX_SECONDS):
         raise argparse.ArgumentTypeError(f"{text} is not in 0 < seconds <= {MAX_SECONDS:g}")
+    if round(value * 60) < 1:  # (simulate steps whole frames: this would be none at all)
+        raise argparse.ArgumentTypeError(f"{text} is less than a frame (1/60 s)")
     return value
 
 

@@ -315,6 +315,7 @@ def test_the_corpus_is_large_and_covers_every_kind():
     ("seconds-negative", ["simulate", "SCENE", "--seconds", "-5"], "--seconds"),
     ("seconds-zero", ["simulate", "SCENE", "--seconds", "0"], "--seconds"),
     ("seconds-huge", ["simulate", "SCENE", "--seconds", "1e9"], "--seconds"),
+    ("seconds-under-a-frame", ["simulate", "SCENE", "--seconds", "1e-300"], "less than a frame"),
     ("seconds-word", ["simulate", "SCENE", "--seconds", "long"], "--seconds"),
     ("scene-missing", ["simulate", "nowhere.yaml"], "nowhere.yaml:0: (file)"),
     ("render-folder-is-a-file", ["render", "meadow", "2", "--out", "FILE/y.png"], "--out"),

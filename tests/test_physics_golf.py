@@ -883,3 +883,37 @@ def test_a_star_passing_the_tip_of_a_wall_of_two_triangles_is_untouched(preset, 
         assert (ball.vx, ball.vy, ball.spin) == pytest.approx((*velocity, 0.0), abs=1e-9)
         assert (ball.x, ball.y) == pytest.approx((start[0] + velocity[0], start[1] + velocity[1]), abs=1e-9)
         assert sim.metrics.max_penetration == 0.0
+
+
+_GATE = [[5.85, 3.8], [6.15, 3.8], [6.15, 6.15], [5.85, 6.15]]
+_CAP = [[5.0, 5.85], [7.0, 5.85], [7.0, 6.15], [5.0, 6.15]]  # a border wall over the gate's far end
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+@pytest.mark.parametrize(("shape", "angle", "y", "spin"), [
+    ({"regular": 8}, 145.16873701596188, 3.747499360549881, -30.0),
+    ({"star": [5, 2]}, 20.0, 3.70, 30.0),
+    ({"random": {"seed": 3, "vertices": 64}}, 200.0, 3.72, -30.0),
+])
+def test_a_wall_covered_at_its_far_end_strikes_as_the_wall_alone(preset, shape, angle, y, spin):
+    """QA: a ball struck at the free corner of a gate wall whose far end (2.35 m off) lies in a border
+    wall, as on narrow-gates, bounced as if the corner were on a flat stretch of wall (the border's
+    hidden corner made the wall's face the reference): an octagon left at w = +0.44 rad/s, not -5.05;
+    a random 64-gon was held 4.5 mm into the corner for two frames, then struck 23 mm deep. The
+    border is never reached: the strike must be the gate's alone (to rounding: a piece of the 64-gon
+    lying along the gate's face takes the wall's face as the reference beside the hidden corner)."""
+    ends = []
+    for walls in ([_GATE, _CAP], [_GATE]):
+        scene = Scene.model_validate({
+            "name": "gate", "gravity": [0.0, 0.0], "effects": ["restitution", "spin", "friction", "ccd"],
+            "walls": [{"polygon": w, "restitution": 1.0, "friction": 1.0} for w in walls],
+            "bodies": [{"name": "ball", "shape": dict(shape, radius=0.45), "angle": angle, "position": [5.0, y],
+                        "velocity": [9.996599435104113, 0.26076758632186564], "spin": spin,
+                        "restitution": 0.6, "friction": 0.3}]})
+        with build_scene(scene, preset) as sim:
+            sim.step(6)
+            ball = sim.body("ball")
+            ends.append((ball.x, ball.y, ball.vx, ball.vy, ball.spin, sim.metrics.max_penetration))
+    capped, alone = ends
+    assert capped == pytest.approx(alone, abs=1e-9)
+    assert abs(alone[2] - 9.996599435104113) > 1.0  # (it was struck)

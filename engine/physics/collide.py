@@ -93,6 +93,27 @@ def _incident_edge(normals: np.ndarray, s: int, e: int, nx: float, ny: float, sk
 
 
 @inlined_leaf
+def _meets_free_corner(va: np.ndarray, na: np.ndarray, sa: int, ea: int, edge: int, vb: np.ndarray, sb: int,
+                       hidden: np.ndarray, i1: int, i2: int, margin: float) -> bool:
+    """Whether a vertex of B's incident edge (i1, i2) that no other piece covers lies where A's
+    reference face makes a contact of it: within `margin` of the face and between its side planes.
+    That is a true corner of the wall, struck by A's face, whatever covers the edge's other end (a
+    gate wall whose far end lies in a border wall struck a ball at its free corner with the wall's
+    face, as the hidden corner 2.35 m off asked: QA)."""
+    nx, ny = na[sa + edge, 0], na[sa + edge, 1]
+    r1x, r1y = va[sa + edge, 0], va[sa + edge, 1]
+    r2 = sa + (edge + 1) % (ea - sa)
+    tx, ty = va[r2, 0] - r1x, va[r2, 1] - r1y
+    reach = PROBE * math.sqrt(tx * tx + ty * ty)
+    meets = False
+    for k in (i1, i2):
+        px, py = vb[sb + k, 0] - r1x, vb[sb + k, 1] - r1y
+        along = tx * px + ty * py
+        meets |= not hidden[sb + k] and nx * px + ny * py <= margin and -reach <= along <= tx * tx + ty * ty + reach
+    return meets
+
+
+@inlined_leaf
 def _clip(points: np.ndarray, count: int, nx: float, ny: float, offset: float, plane_id: float) -> int:
     """Keep the part of a segment (rows 0, 1 of x, y, feature) where n·p <= offset
     (Sutherland-Hodgman on one plane); returns how many points are left."""
@@ -162,7 +183,8 @@ def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndar
         count_inc = ea - sa
     i1, i2 = inc_edge, (inc_edge + 1) % count_inc
     if ref_is_a and seams and (hidden[sb + i1] or hidden[sb + i2]) and \
-            (sep_b >= sep_a - _SEAM_SWITCH or sep_b >= -CONTACT_MARGIN):
+            (sep_b >= sep_a - _SEAM_SWITCH or sep_b >= -CONTACT_MARGIN) and \
+            not _meets_free_corner(va, na, sa, ea, edge, vb, sb, hidden, i1, i2, margin):
         # A's face would meet a wall corner that lies on a flat stretch of wall: the wall's own face
         # there, as near as A's or with A outside it (but for a resting or pressed body's sinking, up
         # to the contact margin), is the true surface, so it is the reference (a slanted face of A

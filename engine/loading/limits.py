@@ -50,7 +50,7 @@ LIMITS: list[tuple[str, str]] = [
     ("content file size", f"≤ {MAX_FILE_BYTES // 1024} KiB"),
     ("YAML nesting depth", f"≤ {MAX_DEPTH}"),
     ("YAML values (anchors, aliases and `<<` merge keys expanded)", f"≤ {MAX_NODES:,}"),
-    ("every number", "finite (no .inf, .nan)"),
+    ("every number", "finite (no .inf, .nan); at most 4,300 characters (YAML 1.1's base-60 `1:30` included)"),
     ("coordinates: positions, vertices, box centres", f"|x|, |y| ≤ {MAX_COORDINATE:,.0f} m"),
     ("shape radius (regular, star, random)", f"{MIN_RADIUS} – {MAX_RADIUS:g} m"),
     ("a `vertices` shape's reach from its centroid", f"≤ {MAX_RADIUS:g} m"),
@@ -70,8 +70,9 @@ LIMITS: list[tuple[str, str]] = [
     ("bodies, walls in a scene", f"1 – {MAX_BODIES:,}, ≤ {MAX_WALLS:,}"),
     ("bodies starting within reach of each other", f"≤ {MAX_START_PAIRS} pairs a body (bounding circles "
                                                    "overlapping: a pile touches, a heap in one spot is refused)"),
-    ("names", f"1 – {MAX_NAME} characters, no control characters or direction overrides, no spaces before or after, "
-              "something that shows (one line on the HUD, the scorecard and in messages)"),
+    ("names", f"1 – {MAX_NAME} characters, no control characters or direction overrides, no spaces or invisible "
+              "(zero-width) characters before or after, something that shows (one line on the HUD, the scorecard "
+              "and in messages)"),
     ("tile size", f"{MIN_TILE:g} – {MAX_TILE:g} m; wall thickness, ball and cup radius ≤ a quarter of it"),
     ("tile positions `at`", f"|column|, |row| ≤ {MAX_TILE_INDEX}; ≤ {MAX_TILES} tiles a hole"),
     ("pattern items; border sets, patterns, courses, holes a course", f"≤ {MAX_ITEMS}; ≤ {MAX_ENTRIES}"),
@@ -81,7 +82,7 @@ LIMITS: list[tuple[str, str]] = [
     ("cup max_speed", f"0 < v ≤ {MAX_CUP_SPEED:g} m/s"),
     ("par; max_strokes", "1 – 20; 1 – 99"),
     ("launcher: every", f"0.1 – {MAX_LAUNCH_EVERY:,.0f} s"),
-    ("`simulate --seconds`", f"0 < s ≤ {MAX_SECONDS:,.0f}"),
+    ("`simulate --seconds`", f"1/120 ≤ s ≤ {MAX_SECONDS:,.0f} (at least one frame)"),
 ]
 
 

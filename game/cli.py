@@ -67,18 +67,30 @@ def shape_arg(text: str) -> tuple[str, object]:
         raise argparse.ArgumentTypeError(str(exc)) from None
 
 
+def _whole(text: str) -> int | None:
+    """A whole number written in ASCII digits (not `١٢` nor `²`, which `str.isdigit` takes), of at most
+    20 of them (more is out of every option's range, and Python refuses to read 5,000); else None."""
+    digits = text.strip()
+    return int(digits) if re.fullmatch(r"[0-9]{1,20}", digits) else None
+
+
+def _quoted(text: str) -> str:
+    """An argument as an error quotes it, cut short (a 5,000-digit seed is not echoed whole)."""
+    return repr(text) if len(text) <= 40 else repr(text[:40]) + "..."
+
+
 def jobs_arg(text: str) -> int:
-    if not text.strip().isdigit() or not 1 <= int(text) <= 64:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a number of processes from 1 to 64")
-    return int(text)
+    if (value := _whole(text)) is None or not 1 <= value <= 64:
+        raise argparse.ArgumentTypeError(f"{_quoted(text)} is not a number of processes from 1 to 64")
+    return value
 
 
 def players_arg(text: str) -> int:
     from polygolf.game.session import MAX_PLAYERS
 
-    if not text.strip().isdigit() or not 1 <= int(text) <= MAX_PLAYERS:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a number of players from 1 to {MAX_PLAYERS}")
-    return int(text)
+    if (value := _whole(text)) is None or not 1 <= value <= MAX_PLAYERS:
+        raise argparse.ArgumentTypeError(f"{_quoted(text)} is not a number of players from 1 to {MAX_PLAYERS}")
+    return value
 
 
 def names_arg(text: str) -> list[str]:
@@ -116,15 +128,15 @@ MAX_SEED = 2**63 - 1
 
 
 def seed_arg(text: str) -> int:
-    if not text.strip().isdigit() or int(text) > MAX_SEED:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a seed: a whole number from 0 to {MAX_SEED}")
-    return int(text)
+    if (value := _whole(text)) is None or value > MAX_SEED:
+        raise argparse.ArgumentTypeError(f"{_quoted(text)} is not a seed: a whole number from 0 to {MAX_SEED}")
+    return value
 
 
 def hole_number_arg(text: str) -> int:
-    if not text.strip().isdigit() or not 1 <= int(text) <= 99:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a hole number from 1 to 99")
-    return int(text)
+    if (value := _whole(text)) is None or not 1 <= value <= 99:
+        raise argparse.ArgumentTypeError(f"{_quoted(text)} is not a hole number from 1 to 99")
+    return value
 
 
 def yaml_arg(text: str) -> Path:

@@ -327,6 +327,12 @@ def test_the_corpus_is_large_and_covers_every_kind():
     ("shape-star-bad", ["render", "meadow", "1", "--shape", "star-6-3", "--out", "OUT/x.png"], "--shape"),
     ("theme-unknown", ["render", "meadow", "1", "--theme", "lava", "--out", "OUT/x.png"], "no theme"),
     ("explain-missing", ["explain", "nowhere:1"], "no course"),
+    # `str.isdigit` took other scripts' digits (`--seed ١٢` was 12) and `²`, whose int() then failed in
+    # argparse's own words; 5,000 digits were echoed whole (QA, stop 31).
+    ("seed-arabic-indic", ["render", "random-nine", "1", "--seed", "١٢", "--out", "OUT/x.png"], "'١٢' is not a seed"),
+    ("seed-superscript", ["render", "random-nine", "1", "--seed", "²", "--out", "OUT/x.png"], "'²' is not a seed"),
+    ("seed-5000-digits", ["render", "random-nine", "1", "--seed", "9" * 5000, "--out", "OUT/x.png"], "'... is not a"),
+    ("players-arabic-indic", ["render", "meadow", "1", "--players", "٢", "--out", "OUT/x.png"], "'٢' is not"),
 ])
 def test_bad_arguments_get_one_line_and_exit_2(tmp_path, capsys, case, args, message):
     (tmp_path / "file.txt").write_text("not a folder")

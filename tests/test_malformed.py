@@ -117,6 +117,11 @@ CASES = [
     ("hole-yaml-syntax", "hole", _sub(HOLE, "tiles:", "tiles: [oops"), 4, "(yaml)", "expected"),
     ("hole-tab-indent", "hole", HOLE.replace("  - {at: [1, 0]", "\t- {at: [1, 0]"), 5, "(yaml)", ""),
     ("hole-bool-key", "hole", _sub(HOLE, "par: 3", "par: 3\ntrue: 1"), 3, "(top level)", "keys must be names"),
+    # A pattern named `1e5` or `2024-01-01` is a number or a date to YAML: the line says so (QA, stop 31).
+    ("library-number-named-pattern", "library", _sub(LIBRARY, "patterns:\n", "patterns:\n  1e5: []\n"), None,
+     "patterns", "1e5 reads as a number in YAML (quote it)"),
+    ("library-date-named-pattern", "library", _sub(LIBRARY, "patterns:\n", "patterns:\n  2024-01-01: []\n"), None,
+     "patterns", "reads as a date in YAML"),
     ("hole-long-name", "hole", _sub(HOLE, "name: Case", "name: " + "x" * 200), 1, "name", "at most 100"),
     ("hole-inline-border-bad", "hole", _sub(HOLE, "borders: open-w}", "borders: {w: opn}}"), 5,
      "tiles[1].borders.w", "'open' or 'wall'"),

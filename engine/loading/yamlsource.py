@@ -13,6 +13,7 @@ standard tags are accepted.
 
 from __future__ import annotations
 
+import datetime
 import errno
 import math
 import os
@@ -88,6 +89,16 @@ _NUMBER_TAGS = {"tag:yaml.org,2002:int", "tag:yaml.org,2002:float"}
 MAX_NUMBER_CHARACTERS = 4300
 
 
+_READ_AS = {bool: "true or false", float: "a number", datetime.date: "a date", datetime.datetime: "a date and time"}
+
+
+def _read_as(key: Any, node: yaml.Node) -> str:
+    """Why a key that looks like a name is not one: YAML reads `1e5`, `2024-01-01` or `yes` as
+    something else (the author meant the name; quoting it says so)."""
+    kind = _READ_AS.get(type(key))
+    return f": {key_text(node.value)} reads as {kind} in YAML (quote it)" if kind else ""
+
+
 class _Builder:
     """Plain data from composed nodes, with the line of every key and list item."""
 
@@ -128,7 +139,7 @@ class _Builder:
                 continue
             key = self.scalar(key_node, loc) if isinstance(key_node, yaml.ScalarNode) else None
             if not isinstance(key, str | int) or isinstance(key, bool):
-                raise self.fail(key_node, loc, "keys must be names")
+                raise self.fail(key_node, loc, "keys must be names" + _read_as(key, key_node))
             if key in out:
                 self.duplicates.append(self.fail(key_node, (*loc, key), "duplicate key"))
                 continue

@@ -17,9 +17,10 @@ from functools import cache
 from pathlib import Path
 from typing import Annotated, Literal
 
-from pydantic import AfterValidator, BaseModel, ConfigDict, Field, ValidationError
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from polygolf.engine.golf.holes import Course, Hole
+from polygolf.engine.loading.limits import Name
 from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.loading.yamlsource import read_at_most
 from polygolf.engine.physics.jit import engine_fingerprint
@@ -37,13 +38,10 @@ Frame = Annotated[int, Field(ge=0, le=MAX_HOLE_FRAMES, strict=True)]
 Number = Annotated[float, Field(strict=True, allow_inf_nan=False)]
 
 
-def _printable(name: str) -> str:
-    if not name.isprintable():
-        raise ValueError("a player's name is printable text on one line")
-    return name
-
-
-PlayerName = Annotated[str, Field(min_length=1, max_length=100), AfterValidator(_printable)]
+# A player's name is held to the one rule names have (`limits.Name`): `str.isprintable`, which this
+# file asked, refuses the joiners of a Persian or an emoji family's name, which the names screen takes,
+# and every round of such a player failed to start (QA).
+PlayerName = Name
 
 
 class ReplayError(ValueError):

@@ -786,6 +786,8 @@ def test_scores_on_the_fresh_database_that_replaced_a_damaged_one_has_no_rounds_
     ("\u0301\u0301", "a name needs a letter, digit or sign that shows"),  # accents alone: invisible
     ("Ann,\u200b", "a name needs a letter, digit or sign that shows"),  # a zero-width space alone
     ("Ann,Bo\u202eb", "may not hold control characters, got U+202E"),  # a direction override
+    ("An\u200bn,Bob", "may not hold an invisible space or hyphen, got U+200B"),  # 'Ann' to the eye (QA)
+    ("An\u00adn,Bob", "may not hold an invisible space or hyphen, got U+00AD"),  # a soft hyphen
     ("A\u0301nn,\u00c1nn", "every player needs a different name"),  # one name, typed two ways
     (" \u00c1nn , Bob,A\u0301nn", "every player needs a different name"),  # (spaces about it are no part)
     ("Abcdefghijklmnopqrstu", "at most 20 characters"),
@@ -807,6 +809,18 @@ def test_names_written_with_joiners_are_names():
     assert names_arg(",".join(names)) == names
     assert [escaped(name) for name in names] == names
     assert escaped("Eve\n\x1b[31m\u202e") == "Eve\\n\\x1b[31m\\u202e"
+
+
+def test_players_named_with_joiners_play_a_round_and_its_replay(capsys):
+    """QA: the round's record held a player's name to `str.isprintable`, which refuses the joiners the
+    names screen takes: every round of a Persian or emoji-family player failed to start (and the
+    saved names made every launch fail)."""
+    names = ["\u0645\u06cc\u200c\u062e\u0648\u0627\u0647\u0645", "\U0001f468\u200d\U0001f469\u200d\U0001f467"]
+    assert autoplay("--players", "2", "--names", ",".join(names)) == 0, capsys.readouterr().err
+    replay = next((data_dir() / "replays").glob("*.json"))
+    assert json.loads(replay.read_text())["players"] == names
+    capsys.readouterr()
+    assert main(["replay", "--verify", str(replay)]) == 0, capsys.readouterr()
 
 
 def test_player_names_are_kept_in_composed_form():

@@ -71,8 +71,9 @@ LIMITS: list[tuple[str, str]] = [
     ("bodies starting within reach of each other", f"≤ {MAX_START_PAIRS} pairs a body (bounding circles "
                                                    "overlapping: a pile touches, a heap in one spot is refused)"),
     ("names", f"1 – {MAX_NAME} characters, no control characters or direction overrides, no spaces or invisible "
-              "(zero-width) characters before or after, something that shows (one line on the HUD, the scorecard "
-              "and in messages)"),
+              "(zero-width) characters before or after, no zero-width space, word joiner or soft hyphen in it (the "
+              "joiners of Persian or an emoji family are text), something that shows (one line on the HUD, the "
+              "scorecard and in messages)"),
     ("tile size", f"{MIN_TILE:g} – {MAX_TILE:g} m; wall thickness, ball and cup radius ≤ a quarter of it"),
     ("tile positions `at`", f"|column|, |row| ≤ {MAX_TILE_INDEX}; ≤ {MAX_TILES} tiles a hole"),
     ("pattern items; border sets, patterns, courses, holes a course", f"≤ {MAX_ITEMS}; ≤ {MAX_ENTRIES}"),
@@ -109,6 +110,7 @@ Rate = finite(0.0, MAX_DRAG)
 Acceleration = finite(-MAX_GRAVITY, MAX_GRAVITY)
 
 
+_INVISIBLE = {0x200B, 0x2060, 0xFEFF, 0x00AD}  # zero-width space, word joiner, zero-width no-break space, soft hyphen
 _BIDI = {*range(0x202A, 0x202F), *range(0x2066, 0x206A), 0x200E, 0x200F, 0x061C}  # direction overrides, marks
 
 
@@ -131,10 +133,14 @@ def _one_line(name: str) -> str:
     if not any(unicodedata.category(c)[0] in "LNPS" for c in name):
         raise ValueError("a name needs a letter, digit or sign that shows")
     # (A zero-width space or joiner at an end shows nothing: `Meadow` and `Meadow` + U+200B were two
-    # courses that looked alike, with different ids.)
+    # courses that looked alike, with different ids; a zero-width space, word joiner or soft hyphen
+    # anywhere joins nothing either: 'An' U+200B 'n' looked like 'Ann'.)
     end = next((c for c in (name[0], name[-1]) if unicodedata.category(c) == "Cf"), None)
     if end is not None:
         raise ValueError(f"a name may not start or end with an invisible character, got U+{ord(end):04X}")
+    hidden = next((c for c in name if ord(c) in _INVISIBLE), None)
+    if hidden is not None:
+        raise ValueError(f"a name may not hold an invisible space or hyphen, got U+{ord(hidden):04X}")
     return name
 
 

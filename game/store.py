@@ -22,6 +22,7 @@ import sqlite3
 import sys
 import time
 from dataclasses import dataclass
+from datetime import datetime, timezone
 from pathlib import Path
 
 from polygolf.engine.loading.limits import MAX_ENTRIES
@@ -47,6 +48,11 @@ CREATE TABLE IF NOT EXISTS holes (
     penalties INTEGER NOT NULL, picked_up INTEGER NOT NULL, PRIMARY KEY (round_id, seat, position));
 CREATE INDEX IF NOT EXISTS holes_best ON holes (hole, strokes);
 """
+
+
+def _now() -> str:
+    """The time in UTC as rounds are stamped (as a replay's `recorded_at` is written)."""
+    return datetime.now(timezone.utc).strftime("%Y-%m-%dT%H:%M:%S")
 
 
 @dataclass(frozen=True, slots=True)
@@ -260,12 +266,15 @@ class Store:
     # -- rounds and bests -------------------------------------------------------------------------
 
     def save_round(self, round_, record, replay: Path | None) -> int | None:
-        """Keep a finished round (a `session.Round` and its `record.RoundRecord`); its id, or None."""
+        """Keep a finished round (a `session.Round` and its `record.RoundRecord`); its id, or None. It
+        is stamped when it is kept, not when it began (its record's time): of equal scores the best
+        is the one finished first, also when two windows play at once (QA: Ann's round, begun 2 s
+        before Bob's and finished after it, took the tied best); in one second, the one kept first."""
         def work(db: sqlite3.Connection) -> int:
             cursor = db.execute(
                 "INSERT INTO rounds (finished_at, course, course_name, shape, preset, players, complete, "
                 "fingerprint, replay) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
-                (record.recorded_at, round_.course.id, round_.course.name, record.shape_label, record.preset,
+                (_now(), round_.course.id, round_.course.name, record.shape_label, record.preset,
                  len(round_.players), int(round_.complete), record.fingerprint,
                  str(replay) if replay is not None else None))
             round_id = cursor.lastrowid
@@ -298,7 +307,7 @@ class Store:
                 "SELECT r.course, h.hole, h.position, h.name, r.shape, h.strokes, h.par, c.name, r.finished_at "
                 "FROM holes h JOIN rounds r ON r.id = h.round_id JOIN cards c ON c.round_id = h.round_id "
                 f"AND c.seat = h.seat WHERE {_typed(HOLE_TYPES)} AND {HOLE_VALUES}{cond} "
-                "ORDER BY r.course, h.position, r.shape, h.strokes, r.finished_at, h.seat", args).fetchall()
+                "ORDER BY r.course, h.position, r.shape, h.strokes, r.finished_at, r.id, h.seat", args).fetchall()
             seen = set()
             for row in holes:
                 key = (row[0], row[1], row[4])
@@ -309,7 +318,7 @@ class Store:
                 "SELECT r.course, r.course_name, r.shape, c.strokes, c.par, c.name, r.finished_at FROM cards c "
                 f"JOIN rounds r ON r.id = c.round_id WHERE r.complete = 1 AND {_typed(ROUND_TYPES)} AND {ROUND_VALUES}"
                 f"{cond} "
-                "ORDER BY r.course, r.shape, c.strokes, r.finished_at, c.seat", args).fetchall()
+                "ORDER BY r.course, r.shape, c.strokes, r.finished_at, r.id, c.seat", args).fetchall()
             seen = set()
             for row in rounds:
                 if (row[0], row[2]) not in seen:

@@ -891,3 +891,27 @@ def test_a_replay_s_course_is_chosen_for_now_and_every_course_stays_on_offer():
     assert game.random_seed == 4711 and game.course_label == "Random nine #4711"
     game.next_course()
     assert game.course is game.courses[0]
+
+
+def test_of_tied_rounds_the_best_is_the_one_finished_first(monkeypatch):
+    """QA: a round was stamped with the time it began, so of two windows' rounds with equal scores the
+    best went to the one begun first though the other finished first; in one second, to the seat
+    order. Now stamped when kept, and in one second the one kept first."""
+    from polygolf.game import store as store_module
+
+    course = find_course(load_all_courses()[0], "sandbox")
+    store = Store(echo=False)
+    ann = RoundPlay(Round(course, players=["Ann"]), CATALOGUE[2][1], "Pentagon", "fast")
+    bob = RoundPlay(Round(course, players=["Bob"]), CATALOGUE[2][1], "Pentagon", "fast")
+    ann.record.recorded_at, bob.record.recorded_at = "2026-01-01T00:00:00", "2026-01-01T00:00:05"  # Ann began first
+    monkeypatch.setattr(store_module, "_now", lambda: "2026-01-01T00:10:00", raising=False)  # kept in one second
+    try:
+        for play in (bob, ann):  # Bob finishes first, with Ann's score
+            while play.round.current() is not None:
+                play.round.finish_hole([(2, False, 0)])
+            store.save_round(play.round, play.record, None)
+        assert store.best_course("sandbox", "Pentagon").player == "Bob"
+        assert {b.player for b in store.bests("sandbox") if b.hole is not None} == {"Bob"}
+    finally:
+        ann.close()
+        bob.close()

@@ -84,6 +84,7 @@ def test_normalise_drops_collinear_vertices():
         ([(0, 0), (1, 0)], "at least 3"),
         ([(0, 0), (1, 0), (2, 0)], "zero area"),
         ([(0, 0), (4, 0), (0, 3), (3, 3)], "cross"),
+        ([(0, 0), (1, 1), (1, 0), (0, 1)], "cross"),  # a symmetric bowtie: its halves' areas cancel (QA)
         ([(0, 0), (1, 0), (1, 0), (0, 1)], "repeated"),
         ([(0, 0), (1, 0), (math.nan, 1)], "finite"),
         ([(0, 0), (1,), (0, 1)], "pairs"),

@@ -13,6 +13,7 @@ import math
 import os
 import re
 import secrets
+from datetime import datetime, timezone
 from functools import cache
 from pathlib import Path
 from typing import Annotated, Literal
@@ -38,10 +39,11 @@ Frame = Annotated[int, Field(ge=0, le=MAX_HOLE_FRAMES, strict=True)]
 Number = Annotated[float, Field(strict=True, allow_inf_nan=False)]
 
 
-# A player's name is held to the one rule names have (`limits.Name`): `str.isprintable`, which this
-# file asked, refuses the joiners of a Persian or an emoji family's name, which the names screen takes,
-# and every round of such a player failed to start (QA).
-PlayerName = Name
+
+
+def utc_stamp() -> str:
+    """Now in UTC to the second, as a round's record and the rounds kept are stamped."""
+    return datetime.now(timezone.utc).strftime("%Y-%m-%dT%H:%M:%S")
 
 
 class ReplayError(ValueError):
@@ -95,7 +97,9 @@ class RoundRecord(_Strict):
     shape_label: str
     shape: ShapeSpec
     preset: Literal["fast", "balanced", "accurate"]
-    players: Annotated[list[PlayerName], Field(min_length=1, max_length=4)]
+    # The one rule names have (`limits.Name`): `str.isprintable`, asked here before, refused the joiners
+    # of a Persian or an emoji family's name, which the names screen takes (QA: no such round started).
+    players: Annotated[list[Name], Field(min_length=1, max_length=4)]
     start_at: Annotated[int, Field(ge=0, strict=True)] = 0
     holes: list[HoleRecord] = []
 

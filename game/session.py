@@ -6,7 +6,6 @@ import unicodedata
 from collections import deque
 from collections.abc import Callable, Collection
 from dataclasses import dataclass, field
-from datetime import datetime, timezone
 from pathlib import Path
 
 from pydantic import TypeAdapter, ValidationError
@@ -21,7 +20,7 @@ from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.engine.physics.polygon import Vec
 from polygolf.game.golfer_process import GolferProcess
-from polygolf.game.record import BallEnd, HoleRecord, Input, RoundRecord, engine, fingerprint
+from polygolf.game.record import BallEnd, HoleRecord, Input, RoundRecord, engine, fingerprint, utc_stamp
 from polygolf.game.shapes import CATALOGUE
 from polygolf.game.sound import ArcadePlayer, SoundBoard
 from polygolf.game.store import Best, Store
@@ -232,7 +231,7 @@ class RoundPlay:
         self.ended: HoleRecord | None = None  # the hole's record, taken when its last ball finished
         self.record = RoundRecord(
             game_version=__version__, engine=engine(),
-            recorded_at=datetime.now(timezone.utc).strftime("%Y-%m-%dT%H:%M:%S"),
+            recorded_at=utc_stamp(),
             course=round_.course.id, course_name=round_.course.name, fingerprint=fingerprint(round_.course),
             shape_label=shape_label, shape=shape, preset=preset, players=list(round_.players),
             start_at=round_.position)

@@ -22,11 +22,11 @@ import sqlite3
 import sys
 import time
 from dataclasses import dataclass
-from datetime import datetime, timezone
 from pathlib import Path
 
 from polygolf.engine.loading.limits import MAX_ENTRIES
 from polygolf.engine.loading.paths import data_dir, exclusive
+from polygolf.game.record import utc_stamp
 
 DB_NAME = "polygolf.db"
 SCHEMA_VERSION = 1
@@ -48,11 +48,6 @@ CREATE TABLE IF NOT EXISTS holes (
     penalties INTEGER NOT NULL, picked_up INTEGER NOT NULL, PRIMARY KEY (round_id, seat, position));
 CREATE INDEX IF NOT EXISTS holes_best ON holes (hole, strokes);
 """
-
-
-def _now() -> str:
-    """The time in UTC as rounds are stamped (as a replay's `recorded_at` is written)."""
-    return datetime.now(timezone.utc).strftime("%Y-%m-%dT%H:%M:%S")
 
 
 @dataclass(frozen=True, slots=True)
@@ -274,7 +269,7 @@ class Store:
             cursor = db.execute(
                 "INSERT INTO rounds (finished_at, course, course_name, shape, preset, players, complete, "
                 "fingerprint, replay) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
-                (_now(), round_.course.id, round_.course.name, record.shape_label, record.preset,
+                (utc_stamp(), round_.course.id, round_.course.name, record.shape_label, record.preset,
                  len(round_.players), int(round_.complete), record.fingerprint,
                  str(replay) if replay is not None else None))
             round_id = cursor.lastrowid

@@ -904,7 +904,7 @@ def test_of_tied_rounds_the_best_is_the_one_finished_first(monkeypatch):
     ann = RoundPlay(Round(course, players=["Ann"]), CATALOGUE[2][1], "Pentagon", "fast")
     bob = RoundPlay(Round(course, players=["Bob"]), CATALOGUE[2][1], "Pentagon", "fast")
     ann.record.recorded_at, bob.record.recorded_at = "2026-01-01T00:00:00", "2026-01-01T00:00:05"  # Ann began first
-    monkeypatch.setattr(store_module, "_now", lambda: "2026-01-01T00:10:00", raising=False)  # kept in one second
+    monkeypatch.setattr(store_module, "utc_stamp", lambda: "2026-01-01T00:10:00", raising=False)  # kept in one second
     try:
         for play in (bob, ann):  # Bob finishes first, with Ann's score
             while play.round.current() is not None:

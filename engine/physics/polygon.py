@@ -200,11 +200,10 @@ def normalise(vertices: Sequence[Sequence[float]]) -> tuple[Outline, Vec]:
     ox, oy = pts[0]
     area = signed_area([(x - ox, y - oy) for x, y in pts])
     extent = max(max(x for x, _ in pts) - min(x for x, _ in pts), max(y for _, y in pts) - min(y for _, y in pts))
-    simple = is_simple(pts)
-    if abs(area) <= _AREA_EPS * extent * extent:  # (a bowtie's halves cancel: its edges cross, say so)
-        raise PolygonError("polygon has zero area" if simple else "polygon edges cross each other (it must be simple)")
-    if not simple:
+    if not is_simple(pts):  # (first: a bowtie's halves cancel, and "zero area" would not say why)
         raise PolygonError("polygon edges cross each other (it must be simple)")
+    if abs(area) <= _AREA_EPS * extent * extent:
+        raise PolygonError("polygon has zero area")
     return about_centroid(pts)
 
 

@@ -95,7 +95,8 @@ def _game_for(course: str | None, hole: int, theme: str | None, shape, only=None
     else:
         game.course_index = game.courses.index(find_course(game.courses, course, game.course_problems))
     if theme is not None:  # ('' too: no theme has no name, and it is refused as `--theme nope` is)
-        game.theme_index = game.themes.index(find_theme(game.themes, theme))
+        unread = [problem for problem in game.problems if problem not in game.course_problems]  # (the themes')
+        game.theme_index = game.themes.index(find_theme(game.themes, theme, unread))
     if shape is not None:
         game.shape_label, game.shape = parse_shape(shape) if isinstance(shape, str) else shape
     if not 1 <= hole <= len(game.course.holes):

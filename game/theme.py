@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from pathlib import Path
 
 from polygolf.engine.loading.limits import Colour, Name
@@ -152,8 +153,11 @@ def themes_before(path: Path) -> dict[str, Path]:
     return taken
 
 
-def find_theme(themes: list[Theme], name: str) -> Theme:
+def find_theme(themes: list[Theme], name: str, unread: Sequence[object] = ()) -> Theme:
+    """The theme of that name. `unread`: the problems of the theme files that could not be read
+    (`load_themes`): the one asked for may be one of them, so the error says why (as `find_course`)."""
     for theme in themes:
         if _key(theme.name) == _key(name):
             return theme
-    raise KeyError(f"no theme {name!r}; themes: {', '.join(t.name.lower() for t in themes)}")
+    raise KeyError(f"no theme {name!r}; themes: {', '.join(t.name.lower() for t in themes)}"
+                   + "".join(f"; not read: {problem}" for problem in unread))

@@ -452,6 +452,17 @@ def test_a_broken_theme_is_left_out_and_the_rest_play(content_copy):
     assert len(game.courses) == 4
 
 
+def test_asking_for_a_theme_that_could_not_be_read_says_why(content_copy, tmp_path, capsys):
+    """`--theme night` with night.yaml broken said only "no theme 'night'" (QA's see-through theme)."""
+    night = content_copy / "themes" / "night.yaml"
+    night.write_text(re.sub(r'\nball: "#?[0-9a-fA-F]*"', '\nball: "#ffd54f00"', night.read_text(), count=1))
+    code = main(["render", "meadow", "1", "--theme", "night", "--out", str(tmp_path / "x.png")])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(err) == 1, err
+    assert err[0].startswith("polygolf: no theme 'night'; themes: grass, sand; not read: ") and str(night) in err[0]
+    assert "see-through" in err[0]
+
+
 def test_every_theme_broken_falls_back_to_a_plain_palette(content_copy):
     from polygolf.game.session import Game
     from polygolf.game.theme import FALLBACK

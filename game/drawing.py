@@ -441,7 +441,13 @@ def fit_width(text: arcade.Text, full: str, width: float, size: float, smallest:
               middle: bool = False) -> None:
     """Show `full` in `text` at most `width` pixels wide: at `size`, else as much smaller as it needs
     (down to `smallest`), else at `smallest` cut short with an ellipsis (in the `middle`, for a name:
-    `cut_middle`). A long player name or a narrow window then never runs text into its neighbours."""
+    `cut_middle`). A long player name or a narrow window then never runs text into its neighbours.
+    The cut is found by halving (a layout a try): text longer than any window shows (QA: a label of
+    100 000 characters edited into the settings) is first cut to what could fit at all, some two
+    pixels a character at the smallest size."""
+    most = int(width / 2.0) + 2
+    if len(full) > most:
+        full = cut_middle(full, most) if middle else full[:most]
     text.text, text.font_size = full, size
     if text.content_width <= width:
         return
@@ -453,10 +459,18 @@ def fit_width(text: arcade.Text, full: str, width: float, size: float, smallest:
         text.font_size = max(smallest, text.font_size - 0.5)  # a width can stay put as the size falls a little
     if text.content_width <= width:
         return
-    keep = len(full)
-    while keep > 1 and text.content_width > width:
-        keep -= 1
-        text.text = cut_middle(full, keep) if middle else full[:keep].rstrip() + "…"
+    def cut(keep: int) -> str:
+        return cut_middle(full, keep) if middle else full[:keep].rstrip() + "…"
+
+    fits, wide = 1, len(full)  # the most characters kept that fit, and the fewest that do not
+    while wide - fits > 1:
+        keep = (fits + wide) // 2
+        text.text = cut(keep)
+        if text.content_width <= width:
+            fits = keep
+        else:
+            wide = keep
+    text.text = cut(fits)
 
 
 def cut_middle(name: str, keep: int) -> str:

@@ -21,7 +21,7 @@ from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.engine.physics.polygon import Vec
 from polygolf.game.golfer_process import GolferProcess
 from polygolf.game.record import BallEnd, HoleRecord, Input, RoundRecord, engine, fingerprint, utc_stamp
-from polygolf.game.shapes import CATALOGUE
+from polygolf.game.shapes import CATALOGUE, labels_shape
 from polygolf.game.sound import ArcadePlayer, SoundBoard
 from polygolf.game.store import Best, Store
 from polygolf.game.theme import Theme, load_themes
@@ -526,9 +526,11 @@ class Game:
         shape = saved.get("shape")
         if isinstance(shape, dict) and isinstance(shape.get("label"), str):
             try:
-                self.set_shape(shape["label"], ShapeSpec.model_validate(shape.get("spec")))
+                spec = ShapeSpec.model_validate(shape.get("spec"))
             except ValueError:
-                pass
+                spec = None
+            if spec is not None and labels_shape(shape["label"], spec):
+                self.set_shape(shape["label"], spec)
         names = saved.get("players")
         if isinstance(names, list) and 1 <= len(names) <= MAX_PLAYERS and all(isinstance(n, str) for n in names):
             try:

@@ -36,6 +36,22 @@ def random_shape(rng: random.Random | None = None) -> tuple[str, ShapeSpec]:
     return f"Random #{seed}", ShapeSpec(random={"seed": seed, "vertices": vertices}, radius=1.0)
 
 
+def labels_shape(label: str, spec: ShapeSpec) -> bool:
+    """Whether `label` is what the game calls the ball `spec` (a catalogue name, "N-gon", "Star
+    {p/q}", "Random #SEED", each of radius 1): a saved setting whose label names another shape, or
+    none, is no setting the game made (QA: "Triangle" over a star {8/3} was shown, and kept its
+    rounds as the Triangle's bests)."""
+    if spec.radius != 1.0:
+        return False
+    if (label, spec) in CATALOGUE:
+        return True
+    if spec.regular is not None:
+        return label == f"{spec.regular}-gon"
+    if spec.star is not None:
+        return label == f"Star {{{spec.star[0]}/{spec.star[1]}}}"
+    return spec.random is not None and label == f"Random #{spec.random.seed}"
+
+
 def parse_shape(text: str) -> tuple[str, ShapeSpec]:
     """A shape from the command line: a catalogue name ('pentagon', 'star-5-2'), a side count
     ('6'), or 'random-SEED'."""

@@ -24,7 +24,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from polygolf.engine.loading.limits import MAX_ENTRIES
+from polygolf.engine.loading.limits import MAX_ENTRIES, MAX_NAME
 from polygolf.engine.loading.paths import data_dir, exclusive
 from polygolf.game.record import utc_stamp
 
@@ -75,12 +75,15 @@ ROUND_TYPES = {"r.course": "text", "r.course_name": "text", "r.shape": "text", "
 # ... and the values a round can hold (a hole's strokes up to its most, 99; its par 1 to 20; a course of at
 # most MAX_ENTRIES holes, its card the sum of its holes' rows): a row edited by hand to -3 strokes is no best.
 MAX_STROKES, MAX_PAR = 99, 20
+# Names (a player's, a hole's, a course's, a shape's) as long as a name may be (QA: a name of 100 000
+# characters edited in froze the scorecard as it was cut to fit, and `scores` printed it whole).
+_NAMED = " AND ".join(f"length({column}) BETWEEN 1 AND {MAX_NAME}" for column in ("c.name", "r.shape"))
 HOLE_VALUES = (f"h.strokes BETWEEN 1 AND {MAX_STROKES} AND h.par BETWEEN 1 AND {MAX_PAR} AND h.position BETWEEN 0 AND "
-               f"{MAX_ENTRIES - 1} AND h.penalties >= 0 AND h.picked_up IN (0, 1) AND "
-               "length(c.name) > 0")
+               f"{MAX_ENTRIES - 1} AND h.penalties >= 0 AND h.picked_up IN (0, 1) AND {_NAMED} AND "
+               f"length(h.name) BETWEEN 1 AND {MAX_NAME}")
 ROUND_VALUES = (f"c.strokes BETWEEN 1 AND {MAX_STROKES * MAX_ENTRIES} AND c.par BETWEEN 1 AND {MAX_PAR * MAX_ENTRIES}"
-                " AND length(c.name) > 0 AND (c.strokes, c.par) = (SELECT SUM(strokes), SUM(par) FROM holes "
-                "WHERE holes.round_id = c.round_id AND holes.seat = c.seat)")
+                f" AND {_NAMED} AND length(r.course_name) BETWEEN 1 AND {MAX_NAME} AND (c.strokes, c.par) = "
+                "(SELECT SUM(strokes), SUM(par) FROM holes WHERE holes.round_id = c.round_id AND holes.seat = c.seat)")
 
 
 def _not_a_folder(folder: Path) -> str | None:

@@ -543,6 +543,37 @@ def test_rows_of_the_wrong_type_are_passed_over_by_the_bests(capsys):
     assert main(["scores"]) == 0 and capsys.readouterr().out.strip() == "no rounds saved yet"
 
 
+@pytest.mark.parametrize(("table", "column"), [("cards", "name"), ("rounds", "course_name"), ("rounds", "shape"),
+                                             ("holes", "name")])
+def test_names_longer_than_a_name_may_be_are_passed_over_by_the_bests(table, column, capsys):
+    """A player's, course's, hole's or shape's name edited in at 100 000 characters (QA: the
+    scorecard froze cutting it to fit, and `scores` printed it whole) is no round the game kept."""
+    assert autoplay() == 0
+    capsys.readouterr()
+    assert main(["scores", "--json"]) == 0
+    kept = json.loads(capsys.readouterr().out)
+    with sqlite3.connect(data_dir() / "polygolf.db") as db:
+        db.execute(f"UPDATE {table} SET {column} = ? WHERE rowid = (SELECT MIN(rowid) FROM {table})", ("N" * 100_000,))
+    assert main(["scores", "--json"]) == 0
+    out = capsys.readouterr().out
+    assert "N" * 101 not in out and len(json.loads(out)) < len(kept)
+
+
+def test_a_saved_shape_whose_label_names_another_shape_is_passed_over(courses):
+    """QA: "Triangle" saved over a star {8/3} was shown as the Triangle, and kept its rounds as the
+    Triangle's bests; a label of 100 000 characters froze the menu cutting it to fit."""
+    store = Store(echo=False)
+    for label, spec in [("Triangle", {"star": [8, 3], "radius": 1.0}), ("T" * 100_000, {"regular": 3, "radius": 1.0}),
+                        ("Random #7", {"random": {"seed": 8, "vertices": 5}, "radius": 1.0})]:
+        assert store.save_settings({"shape": {"label": label, "spec": spec}})
+        game = Game.load()
+        assert (game.shape_label, game.shape) == CATALOGUE[2]  # the default, the pentagon
+    for label, spec in [("Star {8/3}", {"star": [8, 3], "radius": 1.0}), ("7-gon", {"regular": 7, "radius": 1.0}),
+                        ("Random #8", {"random": {"seed": 8, "vertices": 5}, "radius": 1.0})]:
+        assert store.save_settings({"shape": {"label": label, "spec": spec}})
+        assert Game.load().shape_label == label  # what the game itself saves is taken
+
+
 def test_a_refused_write_or_another_versions_database_is_never_set_aside(capsys):
     """Only a file SQLite cannot read is damaged: a constraint that refuses a row, or a database of
     another schema version, costs one warning and the file stays as it is."""

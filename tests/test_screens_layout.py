@@ -388,3 +388,38 @@ def test_the_keyboard_reaches_every_button_of_the_menu_and_the_pause_menu(window
     key(window, arcade.key.DOWN)
     key(window, arcade.key.ENTER)
     assert isinstance(window.current_view, MenuView)  # Main menu, pressed from the keyboard
+
+
+def test_a_text_cut_to_fit_is_cut_where_one_character_less_at_a_time_would_and_in_few_layouts(window):  # noqa: F811
+    """`fit_width` halves its way to the cut: the same cut as taking one character off at a time, and
+    a text of 100 000 characters (QA: a hand-edited setting froze the menu for good; 3 000 for 84 s)
+    in a few dozen layouts."""
+    from polygolf.game.drawing import cut_middle, fit_width
+
+    class Counted(arcade.Text):
+        layouts = 0
+
+        @property
+        def text(self) -> str:
+            return arcade.Text.text.fget(self)
+
+        @text.setter
+        def text(self, value: str) -> None:
+            Counted.layouts += 1
+            arcade.Text.text.fset(self, value)
+
+    for middle in (False, True):
+        for full, width in [("Wilhelmina Wadsworth-Montgomery of the Lower Meadow", 120), ("iiiiWWWW" * 9, 90),
+                            ("N" * 100_000, 300)]:
+            text = Counted("", 0, 0, arcade.color.WHITE, 18)
+            Counted.layouts = 0
+            fit_width(text, full, width, 18, middle=middle)
+            assert text.content_width <= width and Counted.layouts <= 40, (full[:20], middle, Counted.layouts)
+            if len(full) < 1000:  # one character at a time, as the cut was found before
+                one = arcade.Text("", 0, 0, arcade.color.WHITE, text.font_size)
+                keep = len(full)
+                one.text = full
+                while keep > 1 and one.content_width > width:
+                    keep -= 1
+                    one.text = cut_middle(full, keep) if middle else full[:keep].rstrip() + "…"
+                assert text.text == one.text

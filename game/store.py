@@ -31,6 +31,10 @@ from polygolf.game.record import utc_stamp
 DB_NAME = "polygolf.db"
 SCHEMA_VERSION = 1
 LOCK_TIMEOUT = 2.0  # s to wait for another process's write before giving up on this one
+# After a lock was met, for LOCK_BACKOFF s the calls a screen makes (settings, bests) wait only BRIEF_WAIT
+# for it: each waited the whole LOCK_TIMEOUT on the window's thread (QA: a database held locked by
+# another program froze the menu 2 s a click). A round is still waited for in full.
+LOCK_BACKOFF, BRIEF_WAIT = 10.0, 0.05
 
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);
@@ -118,6 +122,7 @@ class Store:
         # Whether the last call did its work: a damaged file set aside and its work done on a fresh one
         # did (with a warning); a database that could not be read at all did not.
         self.done = True
+        self._locked_until = 0.0  # (time.monotonic(): until then, a lock is waited for briefly)
 
     def warn(self, message: str) -> None:
         """One line on stderr, once: the same trouble on every menu click is said only the first time."""
@@ -130,11 +135,12 @@ class Store:
 
     # -- connection -------------------------------------------------------------------------------
 
-    def _connect(self, write: bool) -> sqlite3.Connection:
+    def _connect(self, write: bool, wait: float) -> sqlite3.Connection:
         """A connection inside a transaction: a write one (BEGIN IMMEDIATE: the lock is taken now or
-        never), or a read one, which does not keep another game's writes waiting."""
+        never), or a read one, which does not keep another game's writes waiting; another's lock is
+        waited for `wait` s."""
         self.folder.mkdir(parents=True, exist_ok=True)
-        db = sqlite3.connect(self.path, timeout=LOCK_TIMEOUT, isolation_level=None)
+        db = sqlite3.connect(self.path, timeout=wait, isolation_level=None)
         try:
             db.executescript(SCHEMA)
             db.execute("BEGIN IMMEDIATE" if write else "BEGIN")
@@ -191,17 +197,20 @@ class Store:
                 raise
         self.warn(f"{self.path} was damaged ({why}); kept as {target.name}, starting a fresh one")
 
-    def _transaction(self, work, default, what: str, write: bool = True):
+    def _transaction(self, work, default, what: str, write: bool = True, patient: bool = False):
         """Run `work(db)` in one transaction (`write`: one that writes); on trouble warn once and return
         `default` (and `done` is False). A damaged file is set aside and the work tried once more on a
-        fresh one."""
+        fresh one. A lock is waited for LOCK_TIMEOUT s, or BRIEF_WAIT s within LOCK_BACKOFF s of
+        the last one met unless `patient`."""
         self.done = False
+        wait = LOCK_TIMEOUT if patient or time.monotonic() >= self._locked_until else BRIEF_WAIT
         for attempt in (1, 2):
             damage = None
             opened = self._identity()
             try:
-                db = self._connect(write)
+                db = self._connect(write, wait)
             except sqlite3.OperationalError as exc:  # locked, unwritable folder or file
+                self._met(exc)
                 self.warn(f"cannot {what}: {self.path}: {exc}")
                 return default
             except OtherSchema as exc:  # another version's: not damaged, and not this game's to change
@@ -217,8 +226,10 @@ class Store:
                     result = work(db)
                     db.execute("COMMIT")
                     self.done = True
+                    self._locked_until = 0.0
                     return result
                 except (sqlite3.OperationalError, sqlite3.IntegrityError) as exc:  # (a constraint refused it)
+                    self._met(exc)
                     self.warn(f"cannot {what}: {self.path}: {exc}")
                     return default
                 except sqlite3.DatabaseError as exc:
@@ -238,6 +249,11 @@ class Store:
             except OSError:
                 return default
         return default
+
+    def _met(self, exc: sqlite3.Error) -> None:
+        """Note a lock met (SQLITE_BUSY or SQLITE_LOCKED): the next LOCK_BACKOFF s wait briefly."""
+        if (getattr(exc, "sqlite_errorcode", 0) & 0xFF) in (5, 6) or "locked" in str(exc):  # (BUSY, LOCKED)
+            self._locked_until = time.monotonic() + LOCK_BACKOFF
 
     # -- settings ---------------------------------------------------------------------------------
 
@@ -286,7 +302,7 @@ class Store:
                                 for r in round_.played(seat)])
             return round_id
 
-        return self._transaction(work, None, "save the round")
+        return self._transaction(work, None, "save the round", patient=True)
 
     def bests(self, course: str | None = None, shape: str | None = None) -> list[Best]:
         """Per hole and per whole course: the fewest strokes with each shape, the earliest first on a

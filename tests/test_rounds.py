@@ -465,6 +465,32 @@ def test_a_damaged_database_whose_lock_another_game_holds_is_given_up_in_seconds
     assert Store(tmp_path, echo=False).save_settings({"a": 1})  # the lock let go: set aside, saved
 
 
+def test_a_database_another_program_holds_locked_is_waited_for_in_full_once_then_briefly(tmp_path, monkeypatch):
+    """QA: with the database held locked (`sqlite3`'s BEGIN EXCLUSIVE), every menu click waited the
+    whole lock timeout on the window's thread. After a lock, settings and bests wait only briefly for
+    some seconds; a round is still waited for in full; the lock let go, all is as before."""
+    import polygolf.game.store as store_module
+
+    waits = []
+    connect = sqlite3.connect
+    monkeypatch.setattr(store_module.sqlite3, "connect", lambda *a, **k: waits.append(k["timeout"]) or connect(*a, **k))
+    store = Store(tmp_path, echo=False)
+    assert store.save_settings({"a": 1})
+    holder = connect(tmp_path / "polygolf.db", isolation_level=None)
+    holder.execute("BEGIN EXCLUSIVE")
+    waits.clear()
+    assert store.save_settings({"a": 2}) is False
+    assert store.load_settings() == {} and store.bests() == [] and store.save_settings({"a": 3}) is False
+    assert store.save_round(None, None, None) is None  # (a round: waited for in full, then given up)
+    assert waits == [store_module.LOCK_TIMEOUT] + [store_module.BRIEF_WAIT] * 3 + [store_module.LOCK_TIMEOUT]
+    assert len(store.warnings) == 4 and all("database is locked" in w for w in store.warnings)
+    holder.execute("ROLLBACK")
+    holder.close()
+    waits.clear()
+    assert store.save_settings({"a": 4}) and store.load_settings() == {"a": 4}  # the lock gone: read and written
+    assert store.save_settings({"a": 5}) and waits[1:] == [store_module.LOCK_TIMEOUT] * 2  # and waited for in full
+
+
 def test_a_corrupted_database_is_set_aside_and_the_round_saved_to_a_fresh_one(capsys):
     db = data_dir() / "polygolf.db"
     assert autoplay() == 0

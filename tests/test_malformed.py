@@ -745,6 +745,69 @@ def test_a_link_to_itself_beside_a_watched_hole_does_not_end_the_watching(tmp_pa
         watcher.close()
 
 
+def _seen(watcher, within: float = 10.0) -> bool:
+    """Whether the watcher reports a change within `within` s (a bound against waiting for ever)."""
+    deadline = time.monotonic() + within
+    while time.monotonic() < deadline:
+        if watcher.changed():
+            return True
+        time.sleep(0.05)
+    return False
+
+
+@pytest.mark.parametrize("how", ["deleted", "renamed"])
+def test_a_watched_hole_s_folder_made_again_is_watched_again(tmp_path, how):
+    """QA: the folder deleted (or renamed away) and made again, as a `git checkout` does: the watch
+    kept the old folder's inode, and no later save was seen, nor any error said."""
+    import shutil
+
+    from polygolf.game.watch import FileWatcher
+
+    folder = tmp_path / "holes"
+    folder.mkdir()
+    hole = folder / "hole.yaml"
+    hole.write_text("name: first\n")
+    watcher = FileWatcher(hole)
+    try:
+        time.sleep(0.3)  # the watcher's thread is listening
+        if how == "deleted":
+            shutil.rmtree(folder)
+        else:
+            folder.rename(tmp_path / "holes.old")
+        assert _seen(watcher)  # the hole gone: a change (the reload says what is wrong)
+        folder.mkdir()
+        hole.write_text("name: second\n")
+        assert _seen(watcher)
+        time.sleep(0.5)
+        watcher.changed()
+        for text in ("name: third\n", "name: fourth\n"):  # saves in the new folder, each seen
+            hole.write_text(text)
+            assert _seen(watcher), text
+    finally:
+        watcher.close()
+
+
+@pytest.mark.parametrize("link", ["hole.yaml", "nowhere.yaml"])
+def test_a_watched_hole_made_a_link_to_itself_or_to_nothing_is_a_change(tmp_path, link):
+    """QA: the hole file replaced by a link to itself, or to a missing file, was passed over in
+    silence (it resolves elsewhere, or not at all): a change, which the reload then names."""
+    from polygolf.game.watch import FileWatcher
+
+    hole = tmp_path / "hole.yaml"
+    hole.write_text("name: first\n")
+    watcher = FileWatcher(hole)
+    try:
+        time.sleep(0.3)
+        hole.unlink()
+        assert _seen(watcher)
+        time.sleep(0.5)
+        watcher.changed()
+        hole.symlink_to(link)
+        assert _seen(watcher)
+    finally:
+        watcher.close()
+
+
 @pytest.mark.parametrize("hole", ["../../../etc/passwd", "/etc/hostname.yaml", "sub/hole.yaml", ".hidden.yaml"])
 def test_a_scenes_hole_is_a_file_beside_it_or_a_course_hole(tmp_path, hole, capsys):
     path = tmp_path / "scene.yaml"

@@ -198,6 +198,7 @@ SCENE_PIPELINES = {
     "piston-crush": ["integrate", "spin", "ccd", *CONTACT],
     "v-groove": ["integrate", "spin", "gravity", "ccd", *CONTACT, "restitution"],
     "dog-leg-rail": ["integrate", "spin", "drag", "ccd", *CONTACT, "restitution", "cup"],
+    "elastic-pinch": ["integrate", "spin", "ccd", *CONTACT, "restitution"],  # frictionless everywhere
 }
 FRICTION = {"v-groove", "corner", "deep-overlap", "fast-spin", "pile", "resting-contact", "ghost-corner", "hover-drop",
             "dog-leg-rail", "heavy-crush", "piston-crush", "ghost-pass", "stack-drop"}

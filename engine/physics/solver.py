@@ -625,8 +625,24 @@ def solve_contacts(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, fi
 
         n_chain = _shock_chain(bodies, pair, level, order, s, e, chain, a_grounded)
         if n_chain:
+            # Taking the nearer body as immovable stops the farther one from closing on it however the
+            # nearer one moves: one driven from its support, fast, would drive the farther one with it
+            # (QA: a light body pinched between a heavy one and a wall gave it energy, +40 % in a
+            # substep). The pass is kept only if it took no energy in.
+            before = 0.0
+            for j in range(n_dynamic):
+                saved[j, 0], saved[j, 1], saved[j, 2] = bodies[dynamic[j], B_VX], bodies[dynamic[j], B_VY], \
+                    bodies[dynamic[j], B_SPIN]
+                before += _kinetic_energy(bodies, dynamic[j])
             _propagate_shock(bodies, normals, pair, first, points, sink, chain, a_grounded, n_chain, False, 0.0, 0.0,
                              0.0, 0.0)
+            after = 0.0
+            for j in range(n_dynamic):
+                after += _kinetic_energy(bodies, dynamic[j])
+            if after > before * (1.0 + 1e-12):
+                for j in range(n_dynamic):
+                    bodies[dynamic[j], B_VX], bodies[dynamic[j], B_VY], bodies[dynamic[j], B_SPIN] = \
+                        saved[j, 0], saved[j, 1], saved[j, 2]
         if correction == SPLIT:
             _turning_sinks(bodies, normals, pair, first, points, keys, order, s, e, dt, sink)
             for _ in range(position_iterations):

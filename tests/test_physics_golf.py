@@ -917,3 +917,32 @@ def test_a_wall_covered_at_its_far_end_strikes_as_the_wall_alone(preset, shape, 
     capped, alone = ends
     assert capped == pytest.approx(alone, abs=1e-9)
     assert abs(alone[2] - 9.996599435104113) > 1.0  # (it was struck)
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_a_star_sliding_sunk_on_two_tips_over_narrow_flush_boxes_stays_on_time(preset):
+    """QA: a star {8/3} on two tips, sunk 3.1 mm (within the slop), frictionless, sliding at 23.7 m/s
+    over a row of flush boxes as narrow as 5 cm. At fast a tip passed a narrow box within a substep,
+    and the box beyond it, joined to the floor the star lay by only through the narrow one, was not
+    taken as the same floor: the sweep put the star back at its seam, up to 0.34 m behind."""
+    from polygolf.engine.loading.scene import ShapeSpec
+
+    xs = [-0.664498, -0.233748, 0.860717, 1.944998, 2.051393, 3.228858, 3.771594, 4.16763, 4.224993, 4.275034,
+          5.085459, 5.185919, 5.849737, 5.926974, 6.571397, 6.680676, 7.001373, 8.149164, 8.424255, 8.615543,
+          8.780635, 8.858597, 9.156113, 10.307508]
+    depth, speed, angle = 0.4127146633127921, 23.709751227486993, -22.5
+    shape = {"star": [8, 3], "radius": 0.36449810760716944}
+    a = math.radians(angle)
+    lowest = min(math.sin(a) * x + math.cos(a) * y for x, y in ShapeSpec(**shape).outline())
+    walls = [{"box": {"center": [(p + q) / 2, -depth / 2], "half": [(q - p) / 2, depth / 2]}, "restitution": 0.5,
+              "friction": 0.0} for p, q in zip(xs, xs[1:])]
+    scene = Scene.model_validate({
+        "name": "star-slide", "walls": walls,
+        "bodies": [{"name": "ball", "shape": shape, "angle": angle, "position": [0.0, -lowest - 0.0031374671030305703],
+                    "velocity": [speed, 0.0], "restitution": 0.6, "friction": 0.0}]})
+    with build_scene(scene, preset) as sim:
+        ball = sim.body("ball")
+        for frame in range(1, 19):
+            sim.step()
+            assert ball.x == pytest.approx(speed * frame / 60.0, abs=1e-6), frame
+        assert (ball.vx, ball.vy, ball.spin) == (speed, 0.0, 0.0)

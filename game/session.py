@@ -540,7 +540,7 @@ class Game:
             if names and len(set(names)) == len(names):
                 self.players = names
         volume = saved.get("volume")
-        if isinstance(volume, int | float) and 0.0 <= volume <= 1.0:
+        if isinstance(volume, int | float) and not isinstance(volume, bool) and 0.0 <= volume <= 1.0:
             self.sound.volume = float(volume)  # the sound board's volume is the one setting
         if isinstance(saved.get("muted"), bool):
             self.sound.muted = saved["muted"]

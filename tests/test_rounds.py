@@ -552,6 +552,8 @@ def test_settings_of_the_wrong_type_or_too_deep_fall_back_to_their_defaults():
                         ("players", '["A\u0007B"]'), ("preview", "[" * 100_000), ("guide_seen", b"\x00\xff")])
     game = Game.load()
     assert (game.hint, game.computer_skill, game.preview, game.sound.volume) == ("off", "good", True, 0.5)
+    assert store.save_settings({"volume": True})  # (a bool is no volume, though Python counts it a number)
+    assert Game.load().sound.volume == 0.75  # (the default)
     assert game.players == ["Player 1"]  # a control character in a saved name: not taken
 
 

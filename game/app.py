@@ -128,7 +128,11 @@ def build_nine_here(seed: int):
     try:
         course = build_nine(seed, progress=progress, waiting=waiting)
     except OSError as exc:
-        raise ValueError(f"cannot write Random nine to {nine_folder(seed)}: {exc.strerror or exc}") from exc
+        from polygolf.game.store import not_a_folder
+
+        folder = nine_folder(seed)
+        why = not_a_folder(folder) or exc.strerror or exc
+        raise ValueError(f"cannot write Random nine to {folder}: {why}") from exc
     seconds = time.perf_counter() - started
     print(f"polygolf: Random nine, seed {seed}: {NINE} holes built and proven in {seconds:.0f} s" if built else
           f"polygolf: Random nine, seed {seed}: {NINE} holes ready, built by another game (waited {seconds:.0f} s)",

@@ -23,7 +23,7 @@ from polygolf.game.golfer_process import GolferProcess
 from polygolf.game.record import BallEnd, HoleRecord, Input, RoundRecord, engine, fingerprint, utc_stamp
 from polygolf.game.shapes import CATALOGUE, labels_shape
 from polygolf.game.sound import ArcadePlayer, SoundBoard
-from polygolf.game.store import Best, Store
+from polygolf.game.store import Best, Store, not_a_folder
 from polygolf.game.theme import Theme, load_themes
 
 _NAMES = {-4: "Condor", -3: "Albatross", -2: "Eagle", -1: "Birdie", 0: "Par", 1: "Bogey",
@@ -721,7 +721,8 @@ class Game:
         try:
             replay = session.record.save(self.store.folder / "replays")
         except OSError as exc:
-            self.store.warn(f"cannot save the replay in {self.store.folder / 'replays'}: {exc.strerror or exc}")
+            folder = self.store.folder / "replays"
+            self.store.warn(f"cannot save the replay in {folder}: {not_a_folder(folder) or exc.strerror or exc}")
         self.store.save_round(session.round, session.record, replay)
         return replay
 

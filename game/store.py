@@ -90,7 +90,7 @@ ROUND_VALUES = (f"c.strokes BETWEEN 1 AND {MAX_STROKES * MAX_ENTRIES} AND c.par 
                 "(SELECT SUM(strokes), SUM(par) FROM holes WHERE holes.round_id = c.round_id AND holes.seat = c.seat)")
 
 
-def _not_a_folder(folder: Path) -> str | None:
+def not_a_folder(folder: Path) -> str | None:
     """'X is a file, not a folder' when the data folder or one above it is a file, 'X is a link that
     leads nowhere' when it is a link to nothing or a loop of links (mkdir says only 'File exists')
     (else None)."""
@@ -219,7 +219,7 @@ class Store:
             except sqlite3.DatabaseError as exc:  # not a database, or a damaged one
                 damage = exc
             except OSError as exc:
-                self.warn(f"cannot {what}: {self.folder}: {_not_a_folder(self.folder) or exc.strerror or exc}")
+                self.warn(f"cannot {what}: {self.folder}: {not_a_folder(self.folder) or exc.strerror or exc}")
                 return default
             if damage is None:
                 try:

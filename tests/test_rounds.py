@@ -974,3 +974,14 @@ def test_of_tied_rounds_the_best_is_the_one_finished_first(monkeypatch):
     finally:
         ann.close()
         bob.close()
+
+
+def test_a_replays_folder_that_is_a_file_is_named_so_and_the_round_is_kept(capsys):
+    """QA: 'cannot save the replay in .../replays: File exists' (mkdir's words) did not say why."""
+    data_dir().mkdir(parents=True, exist_ok=True)
+    (data_dir() / "replays").write_text("not a folder")
+    assert autoplay() == 0
+    err = capsys.readouterr().err
+    folder = data_dir() / "replays"
+    assert f"cannot save the replay in {folder}: {folder} is a file, not a folder" in err
+    assert Store(echo=False).round_count() == 1  # the round itself is kept

@@ -453,6 +453,9 @@ def test_a_game_waiting_for_another_games_build_is_told_once_then_has_the_course
     assert err[0] == "polygolf: Random nine, seed 2469: another game is building it; waiting for it..."
     assert len(err) == 2 and err[1].startswith(
         "polygolf: Random nine, seed 2469: 9 holes ready, built by another game (waited "), err
+    assert app.build_nine_here(2468).id == "random-nine-2468"  # found built, nobody waited for: said so
+    said = capsys.readouterr().err.strip().splitlines()
+    assert said == ["polygolf: Random nine, seed 2468: 9 holes ready, built before"]
 
 
 def test_the_build_thread_reports_progress_and_its_course(library):

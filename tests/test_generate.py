@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import functools
 import json
+import re
 import threading
 import time
 from pathlib import Path
@@ -332,6 +333,24 @@ def test_a_stopped_build_goes_on_from_the_holes_written(library):
     asked.clear()
     course = nine.build_nine(8, library=library, prove=prove, progress=progress)
     assert asked == [3, 4, 5, 6, 7, 8, 9] and len(course.playable) == 9
+
+
+def test_a_hole_edited_by_hand_since_it_was_built_is_built_again(library, isolated_user_data):
+    """QA: hole 3's par edited to 9, still a valid hole, was played (and its rounds kept) under the
+    seed's name, which names the same holes on every machine. The build's digest of each hole
+    finds it; that hole alone is made again, as it was."""
+    prove = instant_proof()
+    nine.build_nine(22, library=library, prove=prove)
+    folder = isolated_user_data / "generated" / "nine-22"
+    built = (folder / "hole-3.yaml").read_text()
+    (folder / "hole-3.yaml").write_text(re.sub(r"(?m)^par: \d+", "par: 9", built))
+    assert (folder / "hole-3.yaml").read_text() != built and main(["validate", str(folder / "hole-3.yaml")]) == 0
+    assert nine.load_nine(22, library) is None
+    calls = len(prove.calls)
+    course = nine.build_nine(22, library=library, prove=prove)
+    assert (folder / "hole-3.yaml").read_text() == built and len(course.playable) == 9
+    assert 0 < len(prove.calls) - calls < calls  # (that hole, not the nine)
+    assert nine.load_nine(22, library) is not None
 
 
 def test_a_hole_broken_since_it_was_built_is_built_again_and_a_bad_manifest_is_no_course(library,

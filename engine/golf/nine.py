@@ -25,6 +25,7 @@ from pathlib import Path
 from polygolf.engine.golf.generate import Prove, generate, golfer_proof, schema_ref
 from polygolf.engine.golf.holes import RANDOM_NINE_ID, Course, load_courses, load_hole
 from polygolf.engine.loading.course import TileLibrary, load_library
+from polygolf.engine.loading.limits import MAX_FILE_BYTES
 from polygolf.engine.loading.paths import data_dir, exclusive
 from polygolf.engine.loading.yamlsource import ContentError, read_at_most
 
@@ -92,6 +93,27 @@ def _write(path: Path, text: str) -> None:
         raise
 
 
+def _digest(data: bytes) -> str:
+    return hashlib.sha256(data).hexdigest()
+
+
+def _as_built(folder: Path, k: int, manifest: dict) -> bool:
+    """Whether hole k's file is the one the build wrote (its digest in the manifest): a hole edited
+    by hand since is built again, not played under the seed's name (QA: a par edited to 9 was
+    played, and its rounds kept, as the seed's hole). A manifest written before the digests were
+    kept vouches for its files as they are."""
+    entry = manifest["holes"].get(str(k))
+    if not isinstance(entry, dict):
+        return False
+    if "sha256" not in entry:
+        return True
+    try:
+        data = read_at_most(folder / f"hole-{k}.yaml", MAX_FILE_BYTES)
+    except OSError:
+        return False
+    return _digest(data) == entry["sha256"]
+
+
 def _loads(path: Path, library: TileLibrary) -> bool:
     """Whether a hole built before is there and loads (one broken since is built again)."""
     try:
@@ -108,7 +130,8 @@ def load_nine(seed: int, library: TileLibrary | None = None) -> Course | None:
     folder = nine_folder(seed)
     manifest = _read_manifest(folder)
     if not _same_build(manifest, _manifest(seed, library)) or len(manifest["holes"]) < NINE \
-            or not (folder / "courses.yaml").exists():
+            or not (folder / "courses.yaml").exists() or not all(_as_built(folder, k, manifest)
+                                                                 for k in range(1, NINE + 1)):
         return None
     try:
         courses = load_courses(folder / "courses.yaml", library)
@@ -129,7 +152,7 @@ def _make_hole(job: tuple[int, int, TileLibrary, Prove | None, str]) -> tuple[in
     return k, made.text, {"name": made.plan.name, "draw": made.plan.draw, "tiles": len(made.plan.tiles),
                           "par": made.plan.par if proof is None else int(proof.estimated_par),
                           "best_strokes": None if proof is None else proof.best_strokes,
-                          "seconds": round(made.seconds, 2)}
+                          "seconds": round(made.seconds, 2), "sha256": _digest(made.text.encode("utf-8"))}
 
 
 def _made(jobs: list, workers: int, cancelled: Callable[[], bool]) -> Iterator[tuple[int, str, dict]]:
@@ -220,8 +243,8 @@ def _build_nine(seed: int, folder: Path, library: TileLibrary, prove: Prove | No
     if not _same_build(manifest, wanted):
         manifest = wanted
     schema = schema_ref(folder)
-    todo = [k for k in range(1, NINE + 1) if not (str(k) in manifest["holes"] and _loads(folder / f"hole-{k}.yaml",
-                                                                                          library))]
+    todo = [k for k in range(1, NINE + 1) if not (_as_built(folder, k, manifest)
+                                                  and _loads(folder / f"hole-{k}.yaml", library))]
     done = NINE - len(todo)
     workers = min(len(todo), workers or (1 if prove is not None else os.cpu_count() or 1))
     if todo and progress is not None:

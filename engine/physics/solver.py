@@ -569,8 +569,9 @@ def solve_contacts(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, fi
     cold solve.
 
     Rows: `bodies` (B_ columns), `normals` (M_ columns) and `pair` (body rows of A and B) per
-    manifold, manifold k's points are rows first[k]:first[k + 1] of `points` (P_ columns); `block`
-    per manifold is written. Bodies, manifolds and points are updated in place."""
+    manifold, manifold k's points are rows first[k]:first[k + 1] of `points` (P_ columns) and of
+    `keys` (K_ columns: which point is clipped, `_turning_sinks`); `block` per manifold is written.
+    Bodies, manifolds and points are updated in place."""
     order, start = _islands(bodies, pair)
     level = _levels(bodies, pair)
     n_bodies, n_manifolds = bodies.shape[0], pair.shape[0]

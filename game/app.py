@@ -111,6 +111,7 @@ def build_nine_here(seed: int):
 
     from polygolf.engine.golf.nine import NINE, build_nine, nine_folder
     from polygolf.game.startup import prepare_physics
+    from polygolf.game.store import not_a_folder
 
     prepare_physics()  # here, not in each worker process: they load what it compiled
     started = time.perf_counter()
@@ -132,8 +133,6 @@ def build_nine_here(seed: int):
     try:
         course = build_nine(seed, progress=progress, waiting=waiting)
     except OSError as exc:
-        from polygolf.game.store import not_a_folder
-
         folder = nine_folder(seed)
         why = not_a_folder(folder) or exc.strerror or exc
         raise ValueError(f"cannot write Random nine to {folder}: {why}") from exc

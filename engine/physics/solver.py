@@ -172,6 +172,32 @@ def _kinetic_energy(bodies: np.ndarray, k: int) -> float:
 
 
 @leaf_kernel
+def _island_energy(bodies: np.ndarray, dynamic: np.ndarray, n: int) -> float:
+    """The kinetic energy of the island's dynamic bodies, added left to right in their order (a
+    plain sum, the same on every Python)."""
+    energy = 0.0
+    for j in range(n):
+        energy += _kinetic_energy(bodies, dynamic[j])
+    return energy
+
+
+@leaf_kernel
+def _save_velocities(bodies: np.ndarray, dynamic: np.ndarray, n: int, saved: np.ndarray) -> float:
+    """The island's velocities into `saved` (for `_restore_velocities`); returns its kinetic energy."""
+    for j in range(n):
+        saved[j, 0], saved[j, 1], saved[j, 2] = bodies[dynamic[j], B_VX], bodies[dynamic[j], B_VY], \
+            bodies[dynamic[j], B_SPIN]
+    return _island_energy(bodies, dynamic, n)
+
+
+@leaf_kernel
+def _restore_velocities(bodies: np.ndarray, dynamic: np.ndarray, n: int, saved: np.ndarray) -> None:
+    for j in range(n):
+        bodies[dynamic[j], B_VX], bodies[dynamic[j], B_VY], bodies[dynamic[j], B_SPIN] = \
+            saved[j, 0], saved[j, 1], saved[j, 2]
+
+
+@leaf_kernel
 def solve_block(k11: float, k12: float, k22: float, b1: float, b2: float, a1: float, a2: float
                 ) -> tuple[float, float]:
     """Solve the two-point LCP  w = K x + b,  x >= 0,  w >= 0,  x·w = 0  by enumerating its four cases.
@@ -595,26 +621,16 @@ def solve_contacts(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, fi
                     n_dynamic += 1
         _prepare(bodies, normals, pair, first, block, points, order, s, e, max_condition)
         if warm:
-            # Kinetic energies added left to right in that order (a plain sum, the same on every Python).
-            before = 0.0
-            for j in range(n_dynamic):
-                saved[j, 0], saved[j, 1], saved[j, 2] = bodies[dynamic[j], B_VX], bodies[dynamic[j], B_VY], \
-                    bodies[dynamic[j], B_SPIN]
-                before += _kinetic_energy(bodies, dynamic[j])
+            before = _save_velocities(bodies, dynamic, n_dynamic, saved)
             _warm_start(bodies, normals, pair, first, points, order, s, e)
             for _ in range(iterations):
                 _solve_velocities(bodies, normals, pair, first, block, points, order, s, e, friction)
-            after = 0.0
-            for j in range(n_dynamic):
-                after += _kinetic_energy(bodies, dynamic[j])
-            if after > before * (1.0 + 1e-12):
+            if _island_energy(bodies, dynamic, n_dynamic) > before * (1.0 + 1e-12):
                 # A contact solve without restitution can only take energy away; a cold Gauss-Seidel
                 # sweep never adds any, but last substep's impulses re-applied to contacts that are
                 # now opening can. Fall back to the cold solve.
                 cold_restarts += 1
-                for j in range(n_dynamic):
-                    bodies[dynamic[j], B_VX], bodies[dynamic[j], B_VY], bodies[dynamic[j], B_SPIN] = \
-                        saved[j, 0], saved[j, 1], saved[j, 2]
+                _restore_velocities(bodies, dynamic, n_dynamic, saved)
                 for t in range(s, e):
                     for p in range(first[order[t]], first[order[t] + 1]):
                         points[p, P_NORMAL_IMPULSE] = points[p, P_TANGENT_IMPULSE] = 0.0
@@ -630,20 +646,11 @@ def solve_contacts(bodies: np.ndarray, normals: np.ndarray, pair: np.ndarray, fi
             # nearer one moves: one driven from its support, fast, would drive the farther one with it
             # (QA: a light body pinched between a heavy one and a wall gave it energy, +40 % in a
             # substep). The pass is kept only if it took no energy in.
-            before = 0.0
-            for j in range(n_dynamic):
-                saved[j, 0], saved[j, 1], saved[j, 2] = bodies[dynamic[j], B_VX], bodies[dynamic[j], B_VY], \
-                    bodies[dynamic[j], B_SPIN]
-                before += _kinetic_energy(bodies, dynamic[j])
+            before = _save_velocities(bodies, dynamic, n_dynamic, saved)
             _propagate_shock(bodies, normals, pair, first, points, sink, chain, a_grounded, n_chain, False, 0.0, 0.0,
                              0.0, 0.0)
-            after = 0.0
-            for j in range(n_dynamic):
-                after += _kinetic_energy(bodies, dynamic[j])
-            if after > before * (1.0 + 1e-12):
-                for j in range(n_dynamic):
-                    bodies[dynamic[j], B_VX], bodies[dynamic[j], B_VY], bodies[dynamic[j], B_SPIN] = \
-                        saved[j, 0], saved[j, 1], saved[j, 2]
+            if _island_energy(bodies, dynamic, n_dynamic) > before * (1.0 + 1e-12):
+                _restore_velocities(bodies, dynamic, n_dynamic, saved)
         if correction == SPLIT:
             _turning_sinks(bodies, normals, pair, first, points, keys, order, s, e, dt, sink)
             for _ in range(position_iterations):

@@ -946,3 +946,32 @@ def test_a_star_sliding_sunk_on_two_tips_over_narrow_flush_boxes_stays_on_time(p
             sim.step()
             assert ball.x == pytest.approx(speed * frame / 60.0, abs=1e-6), frame
         assert (ball.vx, ball.vy, ball.spin) == (speed, 0.0, 0.0)
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_a_star_tip_sunk_just_short_of_a_seam_lies_on_the_floor(preset):
+    """QA: a star {8/3} on two tips, sunk 2.3 mm, sliding at 17.3 m/s over flush boxes. One tip lay
+    2.1 mm short of a seam: nearer the covered side face of its box (and the star's own cut between
+    two pieces, parallel to it) than the top, so the star was not seen lying on the floor, and the
+    box after the next seam put it back 72 mm at fast (frame 18)."""
+    from polygolf.engine.loading.scene import ShapeSpec
+
+    xs = [-0.4666189878834811, -0.31386678469725265, 0.754718420414974, 1.6933858694225739, 1.8441128471287098,
+          2.560265309552831, 3.667187888851384, 4.194288745318153, 4.982900984398106, 5.062260178425308,
+          5.9477466594575485, 6.896567170155041, 7.404750813723904]
+    depth, speed, angle, sunk = 0.35695849508392274, 17.29550878876301, 67.5, 0.0023223933999038326
+    shape = {"star": [8, 3], "radius": 0.1666189878834811}
+    a = math.radians(angle)
+    lowest = min(math.sin(a) * x + math.cos(a) * y for x, y in ShapeSpec(**shape).outline())
+    walls = [{"box": {"center": [(p + q) / 2, -depth / 2], "half": [(q - p) / 2, depth / 2]}, "restitution": 1.0,
+              "friction": 0.0} for p, q in zip(xs, xs[1:])]
+    scene = Scene.model_validate({
+        "name": "star-slide", "walls": walls,
+        "bodies": [{"name": "ball", "shape": shape, "angle": angle, "position": [0.0, -lowest - sunk],
+                    "velocity": [speed, 0.0], "restitution": 0.0, "friction": 1.0}]})
+    with build_scene(scene, preset) as sim:
+        ball = sim.body("ball")
+        for frame in range(1, 19):
+            sim.step()
+            assert ball.x == pytest.approx(speed * frame / 60.0, abs=1e-6), frame
+        assert (ball.vx, ball.vy, ball.spin) == (speed, 0.0, 0.0)

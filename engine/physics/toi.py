@@ -526,8 +526,8 @@ def length_near(x: float, y: float, plus: float, more: float, bound: float, othe
 def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
                     state: np.ndarray, rows: np.ndarray, radius: np.ndarray, least: float, grid: tuple,
                     fat_boxes: tuple, seen: np.ndarray, found: np.ndarray, wv: np.ndarray, wn: np.ndarray,
-                    wfirst: np.ndarray, target: float, tolerance: float, allowance: float, far: float,
-                    out: np.ndarray, work: tuple, boxes: np.ndarray) -> tuple[bool, int]:
+                    wfirst: np.ndarray, internal: np.ndarray, target: float, tolerance: float, allowance: float,
+                    far: float, out: np.ndarray, work: tuple, boxes: np.ndarray) -> tuple[bool, int]:
     """For each body q of `rows` (a `body.BodyStore` state, from its pose at the substep's start to
     its pose now; shape q of a `ShapeTable`, bounding radius radius[q]), the earliest impact of any
     of its pieces with the wall pieces its swept box meets in `grid` (the walls' `BoxGrid.arrays`,
@@ -588,8 +588,8 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
                                    wfirst[w + 1], target, tolerance, allowance, work)
                 if t < 1.0:  # unless the piece carries on a surface the body lies by: then as that surface
                     if math.isnan(beside):
-                        beside = max(_level_beside(lv, ln, first, body_first, q, start, wv, wn, wfirst, found, count,
-                                                   w, work), -2.0 * target)
+                        beside = max(_level_beside(lv, ln, first, body_first, q, start, wv, wn, wfirst, internal,
+                                                   found, count, w, work), -2.0 * target)
                     if beside < target + tolerance:  # (else the same answer: the rule is not met)
                         t = time_of_impact(lv, ln, first[i], first[i + 1], reach[i], start, end, wv, wn, wfirst[w],
                                            wfirst[w + 1], target, tolerance, allowance, work, beside)
@@ -603,16 +603,20 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
 
 @leaf_kernel
 def _level_beside(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first: np.ndarray, q: int, pose: np.ndarray,
-                  wv: np.ndarray, wn: np.ndarray, wfirst: np.ndarray, found: np.ndarray, count: int, w: int,
-                  work: tuple) -> float:
+                  wv: np.ndarray, wn: np.ndarray, wfirst: np.ndarray, internal: np.ndarray, found: np.ndarray,
+                  count: int, w: int, work: tuple) -> float:
     """How near body q (shape q, at `pose`) lies to a surface that wall piece w carries on across a
     seam: the least separation of any of its pieces from a piece of `found[:count]` with a face on
     the line of one of w's, facing the same way, joined to it (`geometry.span_on_line`: meeting or
     overlapping it, or a face that does, and so on: a row of narrow flush boxes is one floor, QA: a
     star sliding sunk on two tips at 23.7 m/s passed a 6 cm box in a substep at fast and was put
-    back at the next one's seam, 0.34 m behind), where that face is the nearest (its axis the
-    separating one, within seams.PROBE: a ball in a box's corner lies by its inner faces, not by the
-    outer faces it shares with the floor); inf if none."""
+    back at the next one's seam, 0.34 m behind), where that face is the nearest of the piece's
+    (within seams.PROBE: a ball in a box's corner lies by its inner faces, not by the outer faces it
+    shares with the floor); inf if none. A face another piece covers (`internal`, physics.seams) is
+    no surface, so neither nearest nor an axis: a star's tip sunk 2.3 mm in one box, 2.1 mm short of
+    its seam, lay nearer that covered side face (and the star's own cut between two of its pieces,
+    parallel to it) than the top, so was not seen lying on the floor, and the next seam put the
+    star back 72 mm (QA, fast)."""
     posed, seps = work[0], work[1]
     s, e = wfirst[w], wfirst[w + 1]
     level = math.inf
@@ -636,9 +640,16 @@ def _level_beside(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, body_first:
             if face < 0 or lo > own_hi + PROBE or own_lo > hi + PROBE:
                 continue
             for i in range(body_first[q], body_first[q + 1]):
-                separation = _separations(lv, ln, first[i], first[i + 1], pose[0], pose[1], pose[2], wv, wn, hs, he,
-                                          0.0, 0.0, 0.0, True, posed[0], posed[1], posed[2], posed[3], True, seps)
-                if seps[face - hs] >= separation - PROBE:  # (h's faces first)
+                _separations(lv, ln, first[i], first[i + 1], pose[0], pose[1], pose[2], wv, wn, hs, he, 0.0, 0.0, 0.0,
+                             True, posed[0], posed[1], posed[2], posed[3], True, seps)
+                nearest = separation = -math.inf  # (h's faces first, then the body piece's)
+                for k in range(he - hs + first[i + 1] - first[i]):
+                    if k < he - hs and internal[hs + k]:
+                        continue
+                    separation = max(separation, seps[k])
+                    if k < he - hs:
+                        nearest = max(nearest, seps[k])
+                if seps[face - hs] >= nearest - PROBE:
                     level = min(level, separation)
     return level
 
@@ -896,7 +907,8 @@ def _warm() -> None:
     first_wall_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                     table.body_first, state, np.array([0, 1], dtype=np.int64), np.full(2, 0.71), 0.005, grid.arrays,
                     FatBoxes().of(state, 1), np.zeros(1, dtype=np.bool_), np.empty(1, dtype=np.int64), wall.verts,
-                    wall.normals, wall.first, 0.005, 0.001, 0.005, 0.0025, np.empty(2), toi_work(4), np.empty((2, 4)))
+                    wall.normals, wall.first, np.zeros(4, dtype=np.bool_), 0.005, 0.001, 0.005, 0.0025, np.empty(2),
+                    toi_work(4), np.empty((2, 4)))
     first_pair_hit(*args, start, end, *args, still, still, 0.005, 0.001, 0.005, toi_work(4))
     body_pair_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                    table.body_first, np.array([[0, 1]], dtype=np.int64), state, np.array([0, 1], dtype=np.int64),

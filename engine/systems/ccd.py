@@ -79,8 +79,8 @@ def _sweep_walls(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tupl
     seen, found, hits, work, boxes, _, _, _, _ = inputs
     # No pair can need sweeping while no body steps half the linear slop.
     return first_wall_hits(lv, ln, first, reach, body_first, state, rows, radius, LINEAR_SLOP, grid, fat_boxes, seen,
-                           found, wv, wn, wfirst, internal, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP, 0.5 * LINEAR_SLOP, hits,
-                           work, boxes)
+                           found, wv, wn, wfirst, internal, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP,
+                           0.5 * LINEAR_SLOP, hits, work, boxes)
 
 
 @leaf_kernel

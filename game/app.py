@@ -11,6 +11,7 @@ if TYPE_CHECKING:
     from polygolf.game.session import Game
 
 WINDOW_SIZE = (1280, 720)
+MIN_SIZE = (640, 400)  # every screen is laid out for this and up; the window asks the OS not to go smaller
 TITLE = "PolyGolf"
 
 
@@ -45,7 +46,9 @@ def make_window(visible: bool = True):
         window = arcade.Window(*WINDOW_SIZE, TITLE, resizable=True, visible=visible, antialiasing=True)
     except Exception as exc:  # pyglet raises several kinds when it cannot reach a display
         raise NoDisplay(f"cannot open a window: {exc}") from None
-    window.set_minimum_size(640, 400)
+    # (A hint to the window manager: without one a window can still be made smaller, and every screen
+    # then still draws, squeezed, never raising.)
+    window.set_minimum_size(*MIN_SIZE)
     return window
 
 

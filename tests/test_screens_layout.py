@@ -423,3 +423,53 @@ def test_a_text_cut_to_fit_is_cut_where_one_character_less_at_a_time_would_and_i
                     keep -= 1
                     one.text = cut_middle(full, keep) if middle else full[:keep].rstrip() + "…"
                 assert text.text == one.text
+
+
+def test_make_window_asks_for_the_smallest_size_the_screens_fit(monkeypatch):
+    from polygolf.game import app
+
+    asked = []
+
+    class Window:  # (a second real window would take arcade's current window from the module's one)
+        def __init__(self, *args, **kwargs) -> None:
+            pass
+
+        def set_minimum_size(self, width: int, height: int) -> None:
+            asked.append((width, height))
+
+    monkeypatch.setattr(arcade, "Window", Window)
+    assert isinstance(app.make_window(visible=False), Window)
+    assert asked == [app.MIN_SIZE] == [(640, 400)]
+
+
+@pytest.mark.parametrize("size", [(400, 250), (320, 200), (120, 80), (1, 1)])
+def test_every_screen_draws_in_a_window_below_the_smallest_size(sized, size):  # noqa: F811
+    """With no window manager the minimum size is not enforced (QA: the scorecard raised ValueError
+    for a negative cell under 500x300): every screen still draws, nothing laid out negative."""
+    from polygolf.game.building import NineBuild
+    from polygolf.game.views.build import BuildView
+    from polygolf.game.views.loading import LoadingView
+
+    game = Game.load()
+    game.guide_seen, game.players = True, list(LONG_NAMES)
+    flow = ScreenFlow(sized, game)
+    round_ = Round(game.courses[0], players=list(LONG_NAMES))
+    results = round_.finish_hole([(10, True, 3), (5, False, 1), (2, False, 0), (7, False, 2)])
+    while not round_.over:
+        round_.finish_hole([(4, False, 0), (3, False, 0), (5, False, 0), (2, False, 0)])
+    flow.menu()
+    views = [sized.current_view, GuideView(game, then=lambda: None, back=lambda: None),
+             NamesView(game, flow),
+             BetweenView(game, round_, results, flow), ResultsView(game, round_, flow),
+             BuildView(game, NineBuild(123), flow), LoadingView(game, then=lambda: None, steps=[])]
+    for view in views:
+        sized.show_view(view)
+        resize(sized, *size)
+        view.on_draw()
+    flow.new_round()
+    play = sized.current_view
+    resize(sized, *size)
+    play.on_draw()
+    key(sized, arcade.key.ESCAPE)
+    sized.current_view.on_draw()  # the pause menu over the hole
+    play.close()

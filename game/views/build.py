@@ -117,7 +117,7 @@ class BuildView(UIView):
         y -= heights[1] + gap
         self.status.position = (w / 2, y)
         y -= heights[2] + gap
-        bar_width = min(BAR[0], w - 60)
+        bar_width = max(0.0, min(BAR[0], w - 60))  # (never negative in a window under the smallest size)
         self.bar = ((w - bar_width) / 2, y - bar_height, bar_width)
         self.hint.position = (w / 2, y - bar_height - gap)
 

@@ -115,7 +115,7 @@ class LoadingView(arcade.View):
         w, h = self.window.width, self.window.height
         self.title.position = (w / 2, h / 2 + 140)  # the block in the middle of the window
         self.title.draw()
-        width = min(760, w - 60)
+        width = max(1, min(760, w - 60))
         if self.explain.width != width:
             self.explain.width = width
         self.explain.position = (w / 2, h / 2 + 65)
@@ -127,7 +127,7 @@ class LoadingView(arcade.View):
             self.status.text = "Ready"
         self.status.position = (w / 2, h / 2 - 10)
         self.status.draw()
-        bw, bh = min(BAR[0], w - 60), BAR[1]
+        bw, bh = max(0.0, min(BAR[0], w - 60)), BAR[1]  # (never negative in a window under the smallest size)
         left, bottom = (w - bw) / 2, h / 2 - 62
         arcade.draw_lrbt_rectangle_filled(left, left + bw, bottom, bottom + bh, theme.rgba("panel"))
         arcade.draw_lrbt_rectangle_filled(left, left + bw * self.fraction, bottom, bottom + bh, theme.rgba("button"))

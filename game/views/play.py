@@ -243,7 +243,7 @@ class PlayView(arcade.View):
             texts[name].text, texts[name].font_size = lines[name], HUD_FONT
         widths = sum(texts[name].content_width for name in ("course", "hole", "strokes"))
         if widths + 4 * HUD_MARGIN > w:
-            size = max(HUD_SMALLEST, HUD_FONT * (w - 4 * HUD_MARGIN) / widths)
+            size = max(HUD_SMALLEST, HUD_FONT * (w - 4 * HUD_MARGIN) / max(widths, 1.0))
             for name in ("course", "hole", "strokes"):
                 texts[name].font_size = size
         left = HUD_MARGIN + texts["course"].content_width + HUD_MARGIN

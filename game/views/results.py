@@ -150,10 +150,12 @@ class ResultsView(UIView):
         10 points; a long name cut short); the running rows are left out where the window is too
         low for every row to be readable."""
         roomy = min(0.25 * w, LABEL_WIDTH[2], w - 60 - CELL_WIDTH * (self.columns - 1))  # (cells kept full width)
-        label_w = min(self._label_width, max(LABEL_WIDTH[1], roomy), 0.3 * (w - 60))
-        cell_w = min(CELL_WIDTH, (w - 60 - label_w) / (self.columns - 1))
+        # Every length at least a pixel: a window below the smallest size (no window manager keeps it
+        # from one) is drawn squeezed, never with a negative cell (QA: ValueError under 500x300).
+        label_w = max(1.0, min(self._label_width, max(LABEL_WIDTH[1], roomy), 0.3 * (w - 60)))
+        cell_w = max(1.0, min(CELL_WIDTH, (w - 60 - label_w) / (self.columns - 1)))
         top = h - (95 if h >= 600 else 62)
-        room = top - BELOW_TABLE
+        room = max(1.0, top - BELOW_TABLE)
         shown = [row for row in range(self.rows) if room / self.rows >= 22 or row not in self.running_rows]
         cell_h = min(40.0, room / len(shown))
         if self._sized_for != (w, h):

@@ -674,9 +674,12 @@ class Game:
         self.save_settings("computer_skill")
 
     def close(self) -> None:
-        """The game is closing: the round's world and the golfer's process go."""
+        """The game is closing: the round's world and the golfer's process go, and the settings a
+        locked database kept from being written are written now (waiting for the lock in full)."""
         self.close_session()
         self.golfers.close()
+        if self.store is not None:
+            self.store.flush_settings()
 
     def mark_guide_seen(self) -> None:
         if not self.guide_seen:

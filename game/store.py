@@ -35,6 +35,9 @@ LOCK_TIMEOUT = 2.0  # s to wait for another process's write before giving up on 
 # for it: each waited the whole LOCK_TIMEOUT on the window's thread (QA: a database held locked by
 # another program froze the menu 2 s a click). A round is still waited for in full.
 LOCK_BACKOFF, BRIEF_WAIT = 10.0, 0.05
+# The settings are read once, at launch (before the window opens): a lock is waited for in full, up to
+# this many times (QA8: a game launched while another saved began with the defaults).
+SETTINGS_READS = 3
 
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);
@@ -90,6 +93,9 @@ ROUND_VALUES = (f"c.strokes BETWEEN 1 AND {MAX_STROKES * MAX_ENTRIES} AND c.par 
                 "(SELECT SUM(strokes), SUM(par) FROM holes WHERE holes.round_id = c.round_id AND holes.seat = c.seat)")
 
 
+_GONE = object()
+
+
 def not_a_folder(folder: Path) -> str | None:
     """'X is a file, not a folder' when the data folder or one above it is a file, 'X is a link that
     leads nowhere' when it is a link to nothing or a loop of links (mkdir says only 'File exists')
@@ -123,11 +129,15 @@ class Store:
         # did (with a warning); a database that could not be read at all did not.
         self.done = True
         self._locked_until = 0.0  # (time.monotonic(): until then, a lock is waited for briefly)
+        # Settings chosen but not written yet (the database was locked): written with the next save,
+        # or by `flush_settings` (the game's close), and read back over what the database holds.
+        self.pending: dict[str, object] = {}
 
-    def warn(self, message: str) -> None:
-        """One line on stderr, once: the same trouble on every menu click is said only the first time."""
+    def warn(self, message: str, again: bool = False) -> None:
+        """One line on stderr, once: the same trouble on every menu click is said only the first time
+        (unless `again`: a choice not saved is said each time)."""
         line = f"polygolf: {message}"
-        if line in self.warnings:
+        if line in self.warnings and not again:
             return
         self.warnings.append(line)
         if self.echo:
@@ -197,12 +207,17 @@ class Store:
                 raise
         self.warn(f"{self.path} was damaged ({why}); kept as {target.name}, starting a fresh one")
 
-    def _transaction(self, work, default, what: str, write: bool = True, patient: bool = False):
-        """Run `work(db)` in one transaction (`write`: one that writes); on trouble warn once and return
-        `default` (and `done` is False). A damaged file is set aside and the work tried once more on a
-        fresh one. A lock is waited for LOCK_TIMEOUT s, or BRIEF_WAIT s within LOCK_BACKOFF s of
-        the last one met unless `patient`."""
+    def _transaction(self, work, default, what: str, write: bool = True, patient: bool = False,
+                     again: bool = False):
+        """Run `work(db)` in one transaction (`write`: one that writes); on trouble warn once (each
+        time if `again`) and return `default` (and `done` is False). A damaged file is set aside and
+        the work tried once more on a fresh one. A lock is waited for LOCK_TIMEOUT s, or BRIEF_WAIT s
+        within LOCK_BACKOFF s of the last one met unless `patient`."""
         self.done = False
+        warn = self.warn
+        if again:
+            def warn(message: str) -> None:
+                self.warn(message, again=True)
         wait = LOCK_TIMEOUT if patient or time.monotonic() >= self._locked_until else BRIEF_WAIT
         for attempt in (1, 2):
             damage = None
@@ -211,15 +226,15 @@ class Store:
                 db = self._connect(write, wait)
             except sqlite3.OperationalError as exc:  # locked, unwritable folder or file
                 self._met(exc)
-                self.warn(f"cannot {what}: {self.path}: {exc}")
+                warn(f"cannot {what}: {self.path}: {exc}")
                 return default
             except OtherSchema as exc:  # another version's: not damaged, and not this game's to change
-                self.warn(f"cannot {what}: {exc}")
+                warn(f"cannot {what}: {exc}")
                 return default
             except sqlite3.DatabaseError as exc:  # not a database, or a damaged one
                 damage = exc
             except OSError as exc:
-                self.warn(f"cannot {what}: {self.folder}: {not_a_folder(self.folder) or exc.strerror or exc}")
+                warn(f"cannot {what}: {self.folder}: {not_a_folder(self.folder) or exc.strerror or exc}")
                 return default
             if damage is None:
                 try:
@@ -230,7 +245,7 @@ class Store:
                     return result
                 except (sqlite3.OperationalError, sqlite3.IntegrityError) as exc:  # (a constraint refused it)
                     self._met(exc)
-                    self.warn(f"cannot {what}: {self.path}: {exc}")
+                    warn(f"cannot {what}: {self.path}: {exc}")
                     return default
                 except sqlite3.DatabaseError as exc:
                     damage = exc
@@ -242,7 +257,7 @@ class Store:
                         pass  # a damaged file may refuse even this; closing drops the transaction
                     db.close()
             if attempt == 2:
-                self.warn(f"cannot {what}: {self.path} is damaged ({damage})")
+                warn(f"cannot {what}: {self.path} is damaged ({damage})")
                 return default
             try:
                 self._set_aside(str(damage), opened)
@@ -258,6 +273,8 @@ class Store:
     # -- settings ---------------------------------------------------------------------------------
 
     def load_settings(self) -> dict[str, object]:
+        """The settings kept (with any chosen since and not written yet over them). Read at launch: a
+        lock is waited for in full, SETTINGS_READS times, before the defaults are taken."""
         def work(db: sqlite3.Connection) -> dict[str, object]:
             out = {}
             for key, value in db.execute("SELECT key, value FROM settings"):
@@ -267,15 +284,37 @@ class Store:
                     continue  # one unreadable setting falls back to its default
             return out
 
-        return self._transaction(work, {}, "read the settings", write=False)
+        for _ in range(SETTINGS_READS):
+            out = self._transaction(work, {}, "read the settings", write=False, patient=True)
+            if self.done or time.monotonic() >= self._locked_until:  # (read, or trouble other than a lock)
+                break
+        return {**out, **self.pending}
 
     def save_settings(self, settings: dict[str, object]) -> bool:
+        """Write these settings, with any an earlier save could not write (none is dropped: QA8, two
+        games on one data folder lost clicks to 'database is locked'). When it cannot be written now,
+        it is kept for the next save (or `flush_settings`), and a line says so each time."""
+        self.pending.update(settings)
+        return self.flush_settings(patient=False)
+
+    def flush_settings(self, patient: bool = True) -> bool:
+        """Write the settings not written yet (none: True); a lock waited for in full if `patient`."""
+        if not self.pending:
+            return True
+        chosen = dict(self.pending)
+
         def work(db: sqlite3.Connection) -> bool:
             db.executemany("INSERT OR REPLACE INTO settings VALUES (?, ?)",
-                           [(key, json.dumps(value)) for key, value in settings.items()])
+                           [(key, json.dumps(value)) for key, value in chosen.items()])
             return True
 
-        return self._transaction(work, False, "save the settings")
+        if not self._transaction(work, False, "save the settings",
+                                 patient=patient, again=True):
+            return False
+        for key, value in chosen.items():
+            if self.pending.get(key, _GONE) is value:
+                del self.pending[key]
+        return True
 
     # -- rounds and bests -------------------------------------------------------------------------
 

@@ -887,6 +887,12 @@ def test_scores_on_the_fresh_database_that_replaced_a_damaged_one_has_no_rounds_
 @pytest.mark.parametrize(("names", "why"), [
     ("\u0301\u0301", "a name needs a letter, digit or sign that shows"),  # accents alone: invisible
     ("Ann,\u200b", "a name needs a letter, digit or sign that shows"),  # a zero-width space alone
+    ("Ann,\u3164", "a name needs a letter, digit or sign that shows"),  # a Hangul filler alone (QA8)
+    ("\u3164\u3164,Bob", "a name needs a letter, digit or sign that shows"),
+    ("Ann,\uffa0", "a name needs a letter, digit or sign that shows"),  # halfwidth Hangul filler
+    ("Ann,\u115f\u1160", "a name needs a letter, digit or sign that shows"),  # choseong, jungseong fillers
+    ("Ann,\u2800", "a name needs a letter, digit or sign that shows"),  # a blank Braille cell
+    ("Ann,\u2800\u2062\u3000\u3164", "a name needs a letter, digit or sign that shows"),  # Cf, space, filler
     ("Ann,Bo\u202eb", "may not hold control characters, got U+202E"),  # a direction override
     ("An\u200bn,Bob", "may not hold an invisible space or hyphen, got U+200B"),  # 'Ann' to the eye (QA)
     ("An\u00adn,Bob", "may not hold an invisible space or hyphen, got U+00AD"),  # a soft hyphen
@@ -1028,3 +1034,21 @@ def test_a_replays_folder_that_is_a_file_is_named_so_and_the_round_is_kept(capsy
     folder = data_dir() / "replays"
     assert f"cannot save the replay in {folder}: {folder} is a file, not a folder" in err
     assert Store(echo=False).round_count() == 1  # the round itself is kept
+
+
+@pytest.mark.parametrize("name", ["\u3164", "\uffa0", "\u1160", "\u115f", "\u2800", "\u2800\u3164", "\u3164\u2062\u3164",
+                                  "\u3164\u00a0\u3164", "\u2800\ufff9\u2800"])
+def test_a_name_of_characters_that_show_nothing_is_refused_as_an_empty_one(name):
+    """QA8: Hangul fillers and the blank Braille cell are letters and signs to Unicode but show nothing:
+    the Names screen, --names and the settings all go through `player_name`."""
+    from polygolf.game.session import player_name
+
+    with pytest.raises(ValueError, match="a name needs a letter, digit or sign that shows"):
+        player_name(name)
+
+
+@pytest.mark.parametrize("name", ["Ann\u3164", "\u2800A", "A\u2062B", "\ud55c\uad6d\uc5b4", "\u2801"])
+def test_a_name_with_something_that_shows_is_kept_as_it_is(name):
+    from polygolf.game.session import player_name
+
+    assert player_name(name) == name

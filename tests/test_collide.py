@@ -313,7 +313,7 @@ def test_wall_pieces_a_body_stays_clear_of_are_passed_over_with_the_same_rows():
     pieces = [box(2.0, 0.1), [(1.0, 0.5), (2.5, 0.5), (1.0, 2.0)], [(-2.5, 0.4), (-1.5, 0.4), (-1.5, 1.4), (-2.5, 1.4)]]
     wall = ConvexSet.of(pieces, [polygon.edge_normals(p) for p in pieces])
     flags = np.zeros(len(wall.verts), dtype=np.bool_)
-    walls = (wall.verts, wall.normals, wall.first, flags, flags.copy())
+    walls = (wall.verts, wall.normals, wall.first, flags, np.zeros(len(wall.verts), dtype=np.int8))
     star = polygon.star_polygon(5, 2, 0.45)
     shapes = [polygon.regular_polygon(6, 0.45), star]
     table = ShapeTable.of([ConvexSet.of(list(polygon.convex_pieces(s)), [polygon.edge_normals(p)
@@ -348,7 +348,7 @@ def test_body_pairs_one_stays_clear_of_are_passed_over_with_the_same_rows():
     margin clear of every piece of the other: its rows must be those of `collide_sets` asked about
     every pair within reach, for hexagons, stars ({5/2}: two pieces) and a long box, at random
     poses about each other; and the pass must be taken (pairs within reach but clear of each other)."""
-    from polygolf.engine.physics.collide import BODY, NO_SEAMS, ROW, bodies_pair_contacts, collide_sets
+    from polygolf.engine.physics.collide import BODY, NO_HIDDEN, NO_SEAMS, ROW, bodies_pair_contacts, collide_sets
     from polygolf.engine.physics.geometry import pose_piece
 
     rng = np.random.default_rng(7)
@@ -373,7 +373,7 @@ def test_body_pairs_one_stays_clear_of_are_passed_over_with_the_same_rows():
         a0, a1, b0, b1 = body_first[a], body_first[a + 1], body_first[b], body_first[b + 1]
         out = np.empty((2 * (a1 - a0) * (b1 - b0), ROW))
         made = collide_sets(verts, normals, first[a0:a1 + 1], verts, normals, first[b0:b1 + 1],
-                            np.arange(b1 - b0, dtype=np.int64), NO_SEAMS, NO_SEAMS, False, margin, False, out,
+                            np.arange(b1 - b0, dtype=np.int64), NO_SEAMS, NO_HIDDEN, False, margin, False, out,
                             np.empty((3, 3)))
         assert np.array_equal(rows[:, :BODY], out[:made, :BODY])
         assert len(pairs) == (made > 0)

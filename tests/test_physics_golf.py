@@ -330,6 +330,47 @@ def test_a_vertex_is_hidden_only_on_a_flat_or_reflex_stretch_of_the_walls():
     assert 0 in covered_features(pieces, normals, lambda i: range(2))[1][1]
 
 
+def test_only_an_inside_corner_of_the_walls_is_reflex():
+    """Reflex: the solid round the vertex fills more than half the turn (the inside of an L, where
+    the free space is a wedge); the flat seam on top of two boxes and the outer corners are not."""
+    pieces, normals = zip(_box(0.0, 0.0, 1.0, 1.0), _box(1.0, 0.0, 2.0, 1.0))
+    assert covered_features(pieces, normals, lambda i: range(2))[2] == [frozenset(), frozenset()]
+    pieces, normals = zip(_box(0.0, 0.0, 2.0, 1.0), _box(1.0, 1.0, 2.0, 2.0))  # an L: (1, 1) is inside its bend
+    assert covered_features(pieces, normals, lambda i: range(2))[2] == [frozenset(), frozenset({0})]
+
+
+_NEEDLE = [[-0.20751622794521576, -0.007464149099062448], [0.4150324558904316, 0.0],
+           [-0.20751622794521576, 0.007464149099062448]]
+
+
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+@pytest.mark.parametrize("thickness", [0.006, 0.05])
+@pytest.mark.parametrize("one_polygon", [False, True])
+def test_a_needle_sliding_into_a_v_stays_in_it(preset, thickness, one_polygon):
+    """QA: a needle (0.62 m x 15 mm) shot at 25 m/s lands on one leg of a 90 degree V, slides down
+    it into the corner, its tip sunk in that leg and so just beyond the other leg's covered edge:
+    neither leg's contact stopped it, and it went through the other leg at 19.8 m/s (walls 6 mm to
+    5 cm, fast and balanced). The V as two quads sharing the bisector, or as one wall polygon."""
+    s, length = math.sqrt(0.5), 2.5
+    back = [0.0, -thickness / s]
+    legs = [[[0.0, 0.0], [-length * s, length * s], [-length * s - thickness * s, length * s - thickness * s], back],
+            [back, [length * s + thickness * s, length * s - thickness * s], [length * s, length * s], [0.0, 0.0]]]
+    if one_polygon:
+        legs = [[back, legs[1][1], legs[1][2], [0.0, 0.0], legs[0][1], legs[0][2]]]
+    scene = Scene.model_validate({
+        "name": "needle-v", "walls": [{"polygon": leg, "restitution": 0.5, "friction": 0.5} for leg in legs],
+        "bodies": [{"name": "ball", "shape": {"vertices": _NEEDLE}, "position": [0.5212529727001292, 1.264939856272095],
+                    "angle": math.degrees(5.015888941599809), "velocity": [-3.2789757074877706, -24.784033535921974],
+                    "spin": -21.775639528630325, "restitution": 0.0, "friction": 0.0}]})
+    with build_scene(scene, preset) as sim:
+        ball = sim.body("ball")
+        for _ in range(30):
+            sim.step()
+            # the centroid never more than the slop behind either leg's inner face
+            assert min(s * (ball.x + ball.y), s * (ball.y - ball.x)) > -LINEAR_SLOP
+        assert math.hypot(ball.vx, ball.vy) < 1.0  # (it came to a stop in the V: 14 m/s through it before)
+
+
 @pytest.mark.parametrize("preset", PRESET_NAMES)
 def test_a_square_rests_on_a_ridge_beside_another_wall_without_sinking(preset):
     slope = math.tan(math.radians(7.5))

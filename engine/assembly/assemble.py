@@ -88,17 +88,18 @@ def make_wall(outline: Sequence[polygon.Vec], material: Material) -> Wall:
 
 def mark_seams(walls: Sequence[Wall]) -> None:
     """Tell every wall piece which of its edges and vertices other pieces cover (physics.seams)."""
-    internal, hidden = _seams(tuple(w.pieces for w in walls), tuple(w.normals for w in walls))
+    internal, hidden, reflex = _seams(tuple(w.pieces for w in walls), tuple(w.normals for w in walls))
     start = 0
     for w in walls:
         count = len(w.pieces)
         w.internal, w.hidden = tuple(internal[start:start + count]), tuple(hidden[start:start + count])
+        w.reflex = tuple(reflex[start:start + count])
         start += count
 
 
 @functools.lru_cache(maxsize=64)
 def _seams(pieces: tuple[tuple[polygon.Outline, ...], ...], normals: tuple[tuple[tuple[polygon.Vec, ...], ...], ...]
-           ) -> tuple[list[frozenset[int]], list[frozenset[int]]]:
+           ) -> tuple[list[frozenset[int]], list[frozenset[int]], list[frozenset[int]]]:
     """`covered_features` of every piece of these walls, worked out once for a set of walls (a hole's
     walls are the same each time its world is built: a restart, every shot preview)."""
     flat = [piece for wall in pieces for piece in wall]

@@ -15,6 +15,7 @@ from polygolf.engine.physics.contact import ContactTable, Manifold
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable
 from polygolf.engine.physics.grid import BoxGrid, FatBoxes
 from polygolf.engine.physics.presets import Knobs
+from polygolf.engine.physics.seams import HIDDEN, REFLEX
 from polygolf.engine.physics.settings import FRAME_DT
 
 
@@ -45,7 +46,7 @@ class StaticWorld:
 
     pieces: ConvexSet
     internal: np.ndarray  # bool per vertex row: the edge starting there is covered
-    hidden: np.ndarray  # bool per vertex row
+    hidden: np.ndarray  # int8 per vertex row: 0 a corner, HIDDEN on a flat stretch, REFLEX an inside corner
     owner: np.ndarray  # int64 per piece: its wall entity
     index: np.ndarray  # int64 per piece: its index among that wall's pieces
     materials: np.ndarray  # (pieces, 2) float64: its wall's restitution and friction
@@ -78,8 +79,10 @@ class StaticWorld:
             return np.array([v in getattr(w, marks)[k] if getattr(w, marks) else False
                              for _, w, k in found for v in range(len(w.pieces[k]))], dtype=np.bool_)
 
+        hidden = np.where(rows("reflex"), REFLEX, np.where(rows("hidden"), HIDDEN, 0)).astype(np.int8)
+
         boxes = np.array([w.piece_aabbs[k] for _, w, k in found], dtype=np.float64).reshape(-1, 4)
-        return cls(pieces=pieces, internal=rows("internal"), hidden=rows("hidden"),
+        return cls(pieces=pieces, internal=rows("internal"), hidden=hidden,
                    owner=np.array([e for e, _, _ in found], dtype=np.int64),
                    index=np.array([k for _, _, k in found], dtype=np.int64),
                    materials=np.array([(w.material.restitution, w.material.friction) for _, w, _ in found],

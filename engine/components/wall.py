@@ -14,6 +14,8 @@ class Wall:
     material: Material
     piece_aabbs: tuple[tuple[float, float, float, float], ...]
     # Per piece, what other walls cover (see physics.seams): edges that may not be a contact's
-    # reference face, vertices that may not be a contact point. Filled when the world is built.
+    # reference face, vertices that may not be a contact point, and of those the reflex ones (inside
+    # corners). Filled when the world is built.
     internal: tuple[frozenset[int], ...] = ()
     hidden: tuple[frozenset[int], ...] = ()
+    reflex: tuple[frozenset[int], ...] = ()

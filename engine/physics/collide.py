@@ -22,8 +22,8 @@ import numpy as np
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, face_line, pose_piece, span_on_line
 from polygolf.engine.physics.jit import inlined_kernel, inlined_leaf, leaf_kernel, warm_up
 from polygolf.engine.physics.polygon import Vec
-from polygolf.engine.physics.seams import PROBE
-from polygolf.engine.physics.settings import CONTACT_MARGIN
+from polygolf.engine.physics.seams import HIDDEN, PROBE, REFLEX
+from polygolf.engine.physics.settings import CONTACT_MARGIN, LINEAR_SLOP
 from polygolf.engine.physics.toi import (
     reaches_wall,
     separations_in_body_frame,
@@ -48,6 +48,7 @@ ROW = 14
 # The feature of a point clipped at the reference face's side plane by its first vertex, or by its second.
 CLIPPED_LOW, CLIPPED_HIGH = 100.0, 101.0
 NO_SEAMS = np.zeros(0, dtype=np.bool_)
+NO_HIDDEN = np.zeros(0, dtype=np.int8)  # (`hidden` for a body, which has no seams)
 
 
 @inlined_leaf
@@ -109,7 +110,7 @@ def _meets_free_corner(va: np.ndarray, na: np.ndarray, sa: int, ea: int, edge: i
     for k in (i1, i2):
         px, py = vb[sb + k, 0] - r1x, vb[sb + k, 1] - r1y
         along = tx * px + ty * py
-        meets |= not hidden[sb + k] and nx * px + ny * py <= margin and -reach <= along <= tx * tx + ty * ty + reach
+        meets |= hidden[sb + k] == 0 and nx * px + ny * py <= margin and -reach <= along <= tx * tx + ty * ty + reach
     return meets
 
 
@@ -145,7 +146,68 @@ def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndar
 
     Writes up to two contact rows from `row` on (columns X..NY; the normal points from A to B) and
     returns how many. With `seams`, `internal` and `hidden` mark B's edges and vertices row for row
-    with `vb` (B is a wall piece). `clip`: (3, 3) scratch for the clipped points."""
+    with `vb` (B is a wall piece: `hidden` holds seams.HIDDEN or seams.REFLEX, else 0). `clip`: (3, 3)
+    scratch for the clipped points.
+
+    The manifold is the reference face's, its incident edge clipped to the face's side planes
+    (`_face_manifold`); with seams, room left goes to A's vertices beyond the end of one of B's faces
+    at an inside corner of the walls (`_inside_corner_rows`)."""
+    made = _face_manifold(va, na, sa, ea, vb, nb, sb, eb, internal, hidden, seams, margin, out, row, clip)
+    if seams and made < 2:
+        made += _inside_corner_rows(va, sa, ea, vb, nb, sb, eb, internal, hidden, margin, out, row + made, 2 - made)
+    return made
+
+
+@inlined_leaf
+def _inside_corner_rows(va: np.ndarray, sa: int, ea: int, vb: np.ndarray, nb: np.ndarray, sb: int, eb: int,
+                        internal: np.ndarray, hidden: np.ndarray, margin: float, out: np.ndarray, row: int,
+                        room: int) -> int:
+    """At a reflex corner R of the walls (the inside of a V, a step's foot: seams.REFLEX), the free
+    space is a wedge, bounded by each face's line beyond the face's end too: a vertex of A past R's
+    side plane of a face of B that ends at R (at most CONTACT_MARGIN past, no deeper than
+    LINEAR_SLOP behind the line), within `margin` of the line, is a contact of that face, as if the
+    face went on. The clipping drops it, and the neighbour whose face goes on from R answers only
+    along its own normal: a needle sliding down one leg of a V, its tip in the corner, sunk in that
+    leg and so just beyond the other's covered edge, went through the other leg at 20 m/s (QA; a
+    5 cm wall, fast and balanced). Up to `room` rows from `row`; returns how many."""
+    made = 0
+    count_b = eb - sb
+    for r in range(count_b):
+        if hidden[sb + r] != REFLEX:
+            continue
+        rx, ry = vb[sb + r, 0], vb[sb + r, 1]
+        for face in (r, (r - 1) % count_b):  # the face that leaves R, the face that comes to it
+            if internal[sb + face]:
+                continue
+            other = (r + 1) % count_b if face == r else face  # its other end
+            tx, ty = vb[sb + other, 0] - rx, vb[sb + other, 1] - ry
+            length = math.sqrt(tx * tx + ty * ty)
+            if length == 0.0:
+                continue
+            tx, ty = tx / length, ty / length
+            nx, ny = nb[sb + face, 0], nb[sb + face, 1]
+            for k in range(ea - sa):
+                px, py = va[sa + k, 0], va[sa + k, 1]
+                sep = nx * (px - rx) + ny * (py - ry)
+                past = -(tx * (px - rx) + ty * (py - ry))
+                if not (0.0 < past <= CONTACT_MARGIN and -LINEAR_SLOP <= sep <= margin):
+                    continue
+                if made == room:
+                    return made
+                o = out[row + made]
+                o[X], o[Y], o[SEP] = px - 0.5 * sep * nx, py - 0.5 * sep * ny, sep
+                o[FEATURE], o[REF_IS_A] = ((face * 128 + k) * 2 + 1) * 256 + k, 0.0
+                o[CLIP_X], o[CLIP_Y], o[FACE_X], o[FACE_Y] = px, py, vb[sb + face, 0], vb[sb + face, 1]
+                o[NX], o[NY] = -nx, -ny
+                made += 1
+    return made
+
+
+@inlined_leaf
+def _face_manifold(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndarray, nb: np.ndarray, sb: int,
+                   eb: int, internal: np.ndarray, hidden: np.ndarray, seams: bool, margin: float,
+                   out: np.ndarray, row: int, clip: np.ndarray) -> int:
+    """`collide_convex`'s manifold of the reference face (box2d-lite's), without the inside corners."""
     no_skip = NO_SEAMS
     sep_a, edge_a = max_separation(va, na, sa, ea, vb, sb, eb, no_skip, -1, margin)
     if sep_a > margin:
@@ -182,7 +244,7 @@ def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndar
         inc_edge = _incident_edge(na, sa, ea, nb[sb + edge, 0], nb[sb + edge, 1], no_skip, -1)
         count_inc = ea - sa
     i1, i2 = inc_edge, (inc_edge + 1) % count_inc
-    if ref_is_a and seams and (hidden[sb + i1] or hidden[sb + i2]) and \
+    if ref_is_a and seams and (hidden[sb + i1] != 0 or hidden[sb + i2] != 0) and \
             (sep_b >= sep_a - _SEAM_SWITCH or sep_b >= -CONTACT_MARGIN) and \
             not _meets_free_corner(va, na, sa, ea, edge, vb, sb, hidden, i1, i2, margin):
         # A's face would meet a wall corner that lies on a flat stretch of wall: the wall's own face
@@ -231,7 +293,7 @@ def collide_convex(va: np.ndarray, na: np.ndarray, sa: int, ea: int, vb: np.ndar
     for k in range(2):
         px, py, feature = points[k, 0], points[k, 1], int(points[k, 2])
         sep = nx * px + ny * py - face_offset
-        if ref_is_a and seams and feature < eb - sb and hidden[sb + feature]:
+        if ref_is_a and seams and feature < eb - sb and hidden[sb + feature] != 0:
             continue  # a wall's corner on a flat stretch of wall: the faces around it answer for it
         if sep <= margin:
             o = out[row + made]
@@ -573,7 +635,7 @@ def _pair_rows(first: np.ndarray, body_first: np.ndarray, pairs: np.ndarray, pos
                              radius[a] + margin + _CIRCLE_SLACK):
             continue
         made = collide_sets(posed_v, posed_n, first[a0:a1 + 1], posed_v, posed_n, first[b0:b1 + 1], every[:b1 - b0],
-                            NO_SEAMS, NO_SEAMS, False, margin, False, out[rows:], clip)
+                            NO_SEAMS, NO_HIDDEN, False, margin, False, out[rows:], clip)
         if made == 0:
             continue
         lowest = out[rows, SEP]
@@ -656,14 +718,17 @@ def separation(verts_a: Sequence[Vec], normals_a: Sequence[Vec], verts_b: Sequen
 def collide_polygons(
     verts_a: Sequence[Vec], normals_a: Sequence[Vec], verts_b: Sequence[Vec], normals_b: Sequence[Vec],
     margin: float, internal_b: frozenset[int] = frozenset(), hidden_b: frozenset[int] = frozenset(),
+    reflex_b: frozenset[int] = frozenset(),
 ) -> tuple[Vec, list[RawContact]] | None:
     """Contact manifold of two convex CCW polygons, or None if they are more than `margin` apart:
-    the unit normal from A to B and up to two points. `internal_b`, `hidden_b`: B's covered edges
-    and vertices (B a wall piece; physics.seams)."""
+    the unit normal from A to B (the first point's) and up to two points. `internal_b`, `hidden_b`,
+    `reflex_b`: B's covered edges and vertices, and those at inside corners (B a wall piece;
+    physics.seams)."""
     va, na, vb, nb = _rows(verts_a), _rows(normals_a), _rows(verts_b), _rows(normals_b)
-    seams = bool(internal_b or hidden_b)
+    seams = bool(internal_b or hidden_b or reflex_b)
     internal = np.array([k in internal_b for k in range(len(vb))], dtype=np.bool_)
-    hidden = np.array([k in hidden_b for k in range(len(vb))], dtype=np.bool_)
+    hidden = np.array([REFLEX if k in reflex_b else HIDDEN if k in hidden_b else 0 for k in range(len(vb))],
+                      dtype=np.int8)
     out = np.empty((2, ROW))
     made = collide_convex(va, na, 0, len(va), vb, nb, 0, len(vb), internal, hidden, seams, float(margin), out, 0,
                           np.empty((3, 3)))
@@ -684,12 +749,12 @@ def _warm() -> None:
     separation(square, normals, lifted, normals)
     va, na = _rows(square), _rows(normals)
     first = np.array([0, 4], dtype=np.int64)
-    walls = (_rows(lifted), na, first, np.zeros(4, dtype=np.bool_), np.zeros(4, dtype=np.bool_))
+    walls = (_rows(lifted), na, first, np.zeros(4, dtype=np.bool_), np.zeros(4, dtype=np.int8))
     for pressed in (False, True):
         wall_contacts(va, na, va, na, first, np.array([0.71]), 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0 / 240.0, pressed,
                       walls, np.zeros(1, dtype=np.int64), np.zeros(1, dtype=np.int64), 0.01, np.empty((2, ROW)),
                       np.empty((3, 3)), toi_work(4))
-    collide_sets(va, na, first, _rows(lifted), na, first, np.zeros(1, dtype=np.int64), NO_SEAMS, NO_SEAMS, False,
+    collide_sets(va, na, first, _rows(lifted), na, first, np.zeros(1, dtype=np.int64), NO_SEAMS, NO_HIDDEN, False,
                  0.01, False, np.empty((2, ROW)), np.empty((3, 3)))
     table = ShapeTable.of([ConvexSet.of([square], [normals])])
     bodies_wall_contacts(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,

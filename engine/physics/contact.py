@@ -623,7 +623,7 @@ def _warm() -> None:
     normals = ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))
     table = ShapeTable.of([ConvexSet.of([square], [normals])] * 2)
     floor = ConvexSet.of([((-5.0, -1.0), (5.0, -1.0), (5.0, 0.0), (-5.0, 0.0))], [normals[3:] + normals[:3]])
-    walls = (floor.verts, floor.normals, floor.first, np.zeros(4, dtype=np.bool_), np.zeros(4, dtype=np.bool_))
+    walls = (floor.verts, floor.normals, floor.first, np.zeros(4, dtype=np.bool_), np.zeros(4, dtype=np.int8))
     state[:, B_Y] = 0.499, 1.498
     state[:, COLUMNS.index("inv_mass")] = state[:, COLUMNS.index("mass")] = 1.0
     ents = np.array([3, 4], dtype=np.int64)

@@ -7,7 +7,9 @@ and corners sit on a flat stretch of the solid's boundary (hidden vertices). A b
 across such a seam must feel one flat surface: an internal edge may never be a contact's reference
 face, and a hidden vertex never a contact point (Box2D's chain shapes and ghost vertices serve the
 same end). A vertex is hidden when the solid around it covers at least half of a small circle (flat
-or reflex); a real corner covers less.
+or reflex); a real corner covers less. A reflex one (the inside corner of a V, a step's foot) is
+also where the free space is a wedge: there each face's line bounds it beyond the face's end too
+(`collide.collide_convex`).
 """
 
 from __future__ import annotations
@@ -23,6 +25,10 @@ PROBE = 1e-4
 END_SLACK = 50 * PROBE  # uncovered at an edge's end, still internal: neighbours meeting it at 1.1° or more
 _TURN = 2.0 * math.pi
 _FLAT = 1e-6  # rad: the solid round a vertex fills half the turn within this: a flat stretch
+_REFLEX = 0.05  # rad: the solid round a vertex fills more than half the turn by this: a reflex corner
+# A wall vertex row's mark, as the kernels read it (`StaticWorld.hidden`): a hidden vertex, and a
+# hidden one at a reflex corner.
+HIDDEN, REFLEX = 1, 2
 
 
 def _inside_span(piece: Sequence[Vec], normals: Sequence[Vec], x: float, y: float, dx: float, dy: float
@@ -101,11 +107,13 @@ def _covered_turn(arcs: list[tuple[float, float]]) -> float:
 
 def covered_features(pieces: Sequence[Sequence[Vec]], normals: Sequence[Sequence[Vec]],
                      neighbours: Callable[[int], Sequence[int]]
-                     ) -> tuple[list[frozenset[int]], list[frozenset[int]]]:
-    """Per piece: (internal edge indices, hidden vertex indices). `neighbours(i)` lists the pieces
+                     ) -> tuple[list[frozenset[int]], list[frozenset[int]], list[frozenset[int]]]:
+    """Per piece: (internal edge indices, hidden vertex indices, reflex vertex indices: the hidden
+    ones round which the solid fills more than half the turn). `neighbours(i)` lists the pieces
     whose boxes touch piece i (the broadphase grid answers it)."""
     internal: list[frozenset[int]] = []
     hidden: list[frozenset[int]] = []
+    reflex: list[frozenset[int]] = []
     for i, piece in enumerate(pieces):
         others = [j for j in neighbours(i) if j != i]
 
@@ -123,15 +131,19 @@ def covered_features(pieces: Sequence[Sequence[Vec]], normals: Sequence[Sequence
             length = max(math.hypot(bx - ax, by - ay), PROBE)
             if spans and _covered_along(spans, PROBE / length, min(END_SLACK / length, 0.25)):
                 edges.add(e)
-        corners = set()
+        corners, inside_corners = set(), set()
         for v, (vx, vy) in enumerate(piece):
             # Hidden if the solid round it (this piece's corner and the other pieces there) fills half
             # the turn or more, worked out from the faces' directions: sampled in 16 directions, corners
             # of 158 to 180 degrees counted as flat, and a box resting on such a ridge sank into it.
             arcs = [cone for cone in [_cone(piece, normals[i], vx, vy)]
                     + [_cone(pieces[j], normals[j], vx, vy) for j in others] if cone is not None]
-            if others and _covered_turn(arcs) >= math.pi - _FLAT:
+            covered = _covered_turn(arcs) if others else 0.0
+            if covered >= math.pi - _FLAT:
                 corners.add(v)
+            if covered > math.pi + _REFLEX:
+                inside_corners.add(v)
         internal.append(frozenset(edges))
         hidden.append(frozenset(corners))
-    return internal, hidden
+        reflex.append(frozenset(inside_corners))
+    return internal, hidden, reflex

@@ -75,10 +75,6 @@ def is_computer(name: str) -> bool:
 
 
 MAX_NAME = 20  # characters of a player's name
-# Letters and signs that show nothing: the Hangul fillers and the blank Braille pattern (QA8: a player
-# named U+3164 was taken, and the bests named a blank). With the format characters (Cf), spaces and
-# marks, which are no letter, digit or sign, a name of these alone is no name.
-BLANK = frozenset({0x115F, 0x1160, 0x3164, 0xFFA0, 0x2800})
 _CONTENT_NAME = TypeAdapter(Name)  # the rules every name in the content follows (a course's, a hole's)
 
 
@@ -96,19 +92,9 @@ def player_name(text: str) -> str:
         _CONTENT_NAME.validate_python(name)
     except ValidationError as exc:
         raise ValueError(exc.errors(include_url=False)[0]["msg"].removeprefix("Value error, ")) from None
-    if not shows(name):  # (the content's check's words: the same refusal)
-        raise ValueError("a name needs a letter, digit or sign that shows")
     if len(name) > MAX_NAME:
         raise ValueError(f"a name is at most {MAX_NAME} characters")
     return name
-
-
-def shows(name: str) -> bool:
-    """Whether `name` has a character that shows: a letter, digit, punctuation or symbol that is not
-    one of the BLANK ones (a filler, a blank Braille cell). Format characters (zero-width ones, Cf),
-    spaces of every kind and marks alone show nothing. Characters that show nothing inside a name
-    that shows are kept as they are (a joiner in Persian, an emoji family)."""
-    return any(unicodedata.category(c)[0] in "LNPS" and ord(c) not in BLANK for c in name)
 
 
 def escaped(text: str) -> str:

@@ -1016,3 +1016,17 @@ def test_yaml_merge_keys_take_a_mappings_keys_where_none_is_written(tmp_path, ca
 
     data, _ = load_yaml(tmp_path / "merged.yaml")
     assert data["tiles"][1] == {"at": [1, 0], "borders": "open-ew"}
+
+
+@pytest.mark.parametrize("blank", ["\u3164", "\uffa0\u200d", "\u2800\u2800", "\u115f\u1160"])
+def test_a_content_name_of_fillers_or_blank_braille_is_refused(blank):
+    """QA8: Hangul fillers and the blank Braille pattern are letters and symbols that show nothing;
+    a hole or course named with them alone looked like no name at all (the game's player names
+    follow the same rule, `limits.shows`)."""
+    from pydantic import TypeAdapter, ValidationError
+
+    from polygolf.engine.loading.limits import Name
+
+    with pytest.raises(ValidationError, match="a name needs a letter, digit or sign that shows"):
+        TypeAdapter(Name).validate_python(blank)
+    assert TypeAdapter(Name).validate_python("Ann\u3164Lee") == "Ann\u3164Lee"  # (kept inside a name that shows)

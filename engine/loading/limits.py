@@ -114,6 +114,18 @@ _INVISIBLE = {0x200B, 0x2060, 0xFEFF, 0x00AD}  # zero-width space, word joiner, 
 _BIDI = {*range(0x202A, 0x202F), *range(0x2066, 0x206A), 0x200E, 0x200F, 0x061C}  # direction overrides, marks
 
 
+# Letters and signs that show nothing: the Hangul fillers and the blank Braille pattern (QA8: a player
+# named U+3164 was taken, and the bests named a blank).
+BLANK = frozenset({0x115F, 0x1160, 0x3164, 0xFFA0, 0x2800})
+
+
+def shows(name: str) -> bool:
+    """Whether `name` has a character that shows: a letter, digit, punctuation or symbol that is not
+    one of the BLANK ones. Format characters (zero-width ones, Cf), spaces of every kind and marks
+    alone show nothing; inside a name that shows they are kept (a joiner in Persian, an emoji family)."""
+    return any(unicodedata.category(c)[0] in "LNPS" and ord(c) not in BLANK for c in name)
+
+
 def breaks_a_line(c: str) -> bool:
     """A character no name may hold: a control character or line break, a direction override or mark
     (it reorders what follows), half a surrogate pair (bytes that were not UTF-8). Joiners (U+200C,
@@ -130,7 +142,7 @@ def _one_line(name: str) -> str:
         raise ValueError(f"a name may not hold control characters, got U+{ord(bad):04X}")
     if name != name.strip():
         raise ValueError(f"a name may not start or end with spaces, got {name!r}")
-    if not any(unicodedata.category(c)[0] in "LNPS" for c in name):
+    if not shows(name):
         raise ValueError("a name needs a letter, digit or sign that shows")
     # (A zero-width space or joiner at an end shows nothing: `Meadow` and `Meadow` + U+200B were two
     # courses that looked alike, with different ids; a zero-width space, word joiner or soft hyphen

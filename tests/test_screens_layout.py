@@ -473,3 +473,60 @@ def test_every_screen_draws_in_a_window_below_the_smallest_size(sized, size):  #
     key(sized, arcade.key.ESCAPE)
     sized.current_view.on_draw()  # the pause menu over the hole
     play.close()
+
+
+def long_round(game: Game, holes: int) -> Round:
+    from polygolf.engine.golf.holes import Course
+
+    base = game.courses[0]
+    course = Course(id=f"long{holes}", name=f"Long {holes}", holes=[base.holes[k % len(base.holes)]
+                                                                    for k in range(holes)])
+    round_ = Round(course, players=list(LONG_NAMES))
+    k = 0
+    while not round_.over:
+        k += 1
+        round_.finish_hole([(1 + (k * 3 + seat) % 9, (k + seat) % 17 == 0, 0) for seat in range(4)])
+    return round_
+
+
+@pytest.mark.parametrize("holes", [9, 18, 36, 100, 500])
+@pytest.mark.parametrize("size", [(640, 400), (1280, 720)])
+def test_a_long_course_s_scorecard_shows_its_holes_a_page_at_a_time_with_every_total_whole(sized, size, holes,
+                                                                                           shots_dir):  # noqa: F811
+    """QA8: at 36 holes every total read '1…' (and to par '+…') even at 1280x720, at 100 the cells ran
+    over each other. Holes that would be narrower than MIN_CELL are shown 9 or 18 a page (◀ ▶, Page
+    Up / Down); the totals are the round's, always whole, and every cell's text fits its cell."""
+    from polygolf.game.views.results import MIN_CELL
+
+    game = Game.load()
+    round_ = long_round(game, holes)
+    view = ResultsView(game, round_, ScreenFlow(sized, game))
+    sized.show_view(view)
+    resize(sized, *size)
+    view.on_draw()
+    assert view.per_page == holes or view.per_page in (9, 18) or view.per_page < 9
+    if holes > 9:
+        assert view.buttons["earlier"].disabled and view.buttons["later"].disabled is (view.pages == 1)
+    seen = []
+    for page in range(view.pages):
+        assert view.page == page
+        view.on_draw()
+        label_w, cell_w, _, _, rows = view._fit(*size)
+        assert cell_w >= MIN_CELL - 1e-9 or view.per_page == holes
+        last = view.columns - 1
+        totals = [cell for cell in view.cells if cell.col == last]
+        assert [cell.text.text for cell in totals] == [cell.full for cell in totals]  # whole, never cut
+        assert totals[2].text.text == str(round_.total_strokes(0))
+        for cell in view.cells:
+            if 0 < cell.col < last and cell.row in rows:  # (a low window leaves the running rows out)
+                assert cell.text.content_width <= cell_w, (cell.text.text, cell_w)
+                assert "…" not in cell.text.text
+        seen += [cell.text.text for cell in view.cells if cell.row == 0 and 0 < cell.col < last]
+        if page == 0:
+            assert_not_blank(snapshot(sized, shots_dir, f"layout-results-{holes}-{size[0]}"), "results")
+        key(sized, arcade.key.PAGEDOWN)
+    assert seen == [str(k) for k in range(1, holes + 1)]  # every hole once, in order
+    assert view.page == view.pages - 1  # (Page Down on the last page stays there)
+    if holes > 9:
+        key(sized, arcade.key.PAGEUP)
+        assert view.page == max(0, view.pages - 2)

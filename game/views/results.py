@@ -17,6 +17,11 @@ from polygolf.game.views.widgets import KeyboardButtons, themed_button, title
 LABEL_WIDTH = (110.0, 220.0, 360.0)  # px: the label column fits the longest label, at least the first, at most
 # the second or, in a wide window, a quarter of it up to the third (long names stay large at 1920 px)
 CELL_WIDTH = 96.0
+# A hole's column is never narrower: more holes than fit so are shown a page at a time (nine or
+# eighteen, as a card's front and back nines), turned with the ◀ ▶ buttons or Page Up / Page Down
+# (QA8: at 36 holes every total read "1…", at 100 the cells ran over each other).
+MIN_CELL = 34.0
+TOTAL_WIDTH = (64.0, 96.0)  # px: the Total column, always wide enough for its numbers (at least, at most)
 BELOW_TABLE = 200.0  # px under the table: the winner, the best, the notes and the buttons
 
 
@@ -89,35 +94,81 @@ class ResultsView(UIView):
             rows.append(("To par, running" if alone else "  to par, running", running(card), par_text(strokes - par)))
         self.player_rows = {2 + 2 * seat for seat in range(len(round_.players))}
         self.running_rows = {3 + 2 * seat for seat in range(len(round_.players))}
-        for row, (label, values, total) in enumerate(rows):
-            for col, value in enumerate([label, *values, total]):
-                bold = row == 0 or col == len(values) + 1 or (col == 0 and row in self.player_rows | {1})
-                size = 13 if row in self.running_rows else 15
-                # A hole's score without its "(+1)" where the cell is too narrow: the row below has it.
-                short = value.split(" (")[0] if row in self.player_rows and 0 < col <= len(values) else value
-                self.cells.append(Cell(arcade.Text(value, 0, 0, theme.rgba("text"), size,
-                                                   anchor_x="left" if col == 0 else "center", anchor_y="center",
-                                                   bold=bold), col, row, value, short, size))
-        self.columns = len(results) + 2
+        self.table = rows
+        self.holes = len(results)
         self.rows = len(rows)
-        self._label_width = max(LABEL_WIDTH[0], 20.0 + max(cell.text.content_width for cell in self.cells
-                                                           if cell.col == 0))
+        labels = [arcade.Text(label, 0, 0, font_size=15, bold=True) for label, _, _ in rows]
+        self._label_width = max(LABEL_WIDTH[0], 20.0 + max(text.content_width for text in labels))
+        totals = [arcade.Text(total, 0, 0, font_size=15, bold=True) for _, _, total in rows]
+        self._total_width = min(TOTAL_WIDTH[1], max(TOTAL_WIDTH[0], 16.0 + max(t.content_width for t in totals)))
+        self.page = 0
+        self._total_w, _, self.per_page = self._columns_for(self.window.width if self.window else 1280)
         self._sized_for: tuple[int, int] | None = None
+        self.page_text = arcade.Text("", 0, 0, theme.rgba("text"), 13, anchor_x="center", anchor_y="center")
+        self._build_cells()
         self.note = arcade.Text("* picked up after the last stroke allowed"
                                 if any(r.picked_up for card in round_.cards for r in card) else "", 0, 0,
                                 theme.rgba("text"), 12, anchor_x="center", anchor_y="center")
         self._lines = {text: (text.text, text.font_size) for text in (self.summary, self.best, self.note)}
         row_box = UIBoxLayout(vertical=False, space_between=16)
         self.buttons = {}
-        for key, text, action in (("again", "Play again", self.on_again), ("menu", "Main menu", self.on_menu)):
-            button = themed_button(theme, text, width=220, clicks=self.game.sound)
+        choices = [("again", "Play again", self.on_again, 220), ("menu", "Main menu", self.on_menu, 220)]
+        if self.holes > 9:  # (pages where the window is too narrow for every hole)
+            choices = [("earlier", "◀", self.on_earlier, 56), *choices, ("later", "▶", self.on_later, 56)]
+        for key, text, action, width in choices:
+            button = themed_button(theme, text, width=width, clicks=self.game.sound)
             button.on_click = action  # type: ignore[method-assign]
             row_box.add(button)
             self.buttons[key] = button
+        self._mark_pages()
         anchor = KeyboardButtons()
         anchor.add(row_box, anchor_x="center_x", anchor_y="bottom", align_y=30)
         self.ui.add(anchor)
         anchor.focus(self.buttons["menu"])  # where Enter and Esc always went; the arrows reach Play again
+
+    @property
+    def pages(self) -> int:
+        return -(-self.holes // self.per_page) if self.holes else 1
+
+    def _build_cells(self) -> None:
+        """The cells of the page shown: the labels, its holes' columns and the totals (the round's)."""
+        theme = self.game.theme
+        start = self.page * self.per_page
+        shown = range(start, min(self.holes, start + self.per_page))
+        self.cells = []
+        for row, (label, values, total) in enumerate(self.table):
+            page = [values[k] for k in shown]
+            for col, value in enumerate([label, *page, total]):
+                bold = row == 0 or col == len(page) + 1 or (col == 0 and row in self.player_rows | {1})
+                size = 13 if row in self.running_rows else 15
+                # A hole's score without its "(+1)" where the cell is too narrow: the row below has it.
+                short = value.split(" (")[0] if row in self.player_rows and 0 < col <= len(page) else value
+                self.cells.append(Cell(arcade.Text(value, 0, 0, theme.rgba("text"), size,
+                                                   anchor_x="left" if col == 0 else "center", anchor_y="center",
+                                                   bold=bold), col, row, value, short, size))
+        self.columns = len(shown) + 2
+        self.page_text.text = (f"Holes {shown.start + 1}–{shown.stop} of {self.holes}  ·  ◀ ▶ or Page Up / Down"
+                               if self.pages > 1 else "")
+        self._sized_for = None
+        self._mark_pages()
+
+    def _mark_pages(self) -> None:
+        """◀ and ▶ greyed where there is no page that way."""
+        for key, able in (("earlier", self.page > 0), ("later", self.page < self.pages - 1)):
+            if key in getattr(self, "buttons", {}):
+                self.buttons[key].disabled = not able
+
+    def turn_page(self, step: int) -> None:
+        page = max(0, min(self.pages - 1, self.page + step))
+        if page != self.page:
+            self.page = page
+            self._build_cells()
+
+    def on_earlier(self, _event=None) -> None:
+        self.turn_page(-1)
+
+    def on_later(self, _event=None) -> None:
+        self.turn_page(1)
 
     def summary_line(self) -> str:
         round_ = self.round
@@ -140,20 +191,36 @@ class ResultsView(UIView):
     def on_key_press(self, symbol: int, modifiers: int) -> None:
         if window_key(self.window, self.game, symbol):
             return
-        if symbol in (arcade.key.ENTER, arcade.key.RETURN, arcade.key.ESCAPE):
+        if symbol in (arcade.key.PAGEDOWN, arcade.key.PAGEUP):
+            self.turn_page(1 if symbol == arcade.key.PAGEDOWN else -1)
+        elif symbol in (arcade.key.ENTER, arcade.key.RETURN, arcade.key.ESCAPE):
             self.on_menu()
+
+    def _columns_for(self, w: int) -> tuple[float, float, int]:
+        """(Total column width, label column width, holes a page) in a window `w` px wide."""
+        total_w = max(1.0, min(self._total_width, 0.2 * w))
+        roomy = min(0.25 * w, LABEL_WIDTH[2], w - 60 - total_w - CELL_WIDTH * self.holes)  # (cells kept full width)
+        # Every length at least a pixel: a window below the smallest size (no window manager keeps it
+        # from one) is drawn squeezed, never with a negative cell (QA: ValueError under 500x300).
+        label_w = max(1.0, min(self._label_width, max(LABEL_WIDTH[1], roomy), 0.3 * (w - 60)))
+        fit = max(1, int((w - 60 - label_w - total_w) // MIN_CELL))
+        holes = max(1, self.holes)
+        return total_w, label_w, holes if fit >= holes else 18 if fit >= 18 else 9 if fit >= 9 else fit
 
     def _fit(self, w: int, h: int) -> tuple[float, float, float, float, list[int]]:
         """(label column width, cell width, cell height, the table's top, the rows shown) for this
         window, every cell's text fitted when the window is resized: a row's cells share one size,
         as large as its widest cell allows (a hole's score without its "(+1)" if that would be under
         10 points; a long name cut short); the running rows are left out where the window is too
-        low for every row to be readable."""
-        roomy = min(0.25 * w, LABEL_WIDTH[2], w - 60 - CELL_WIDTH * (self.columns - 1))  # (cells kept full width)
-        # Every length at least a pixel: a window below the smallest size (no window manager keeps it
-        # from one) is drawn squeezed, never with a negative cell (QA: ValueError under 500x300).
-        label_w = max(1.0, min(self._label_width, max(LABEL_WIDTH[1], roomy), 0.3 * (w - 60)))
-        cell_w = max(1.0, min(CELL_WIDTH, (w - 60 - label_w) / (self.columns - 1)))
+        low for every row to be readable. Holes that would be narrower than MIN_CELL are shown a page
+        (9 or 18 of them) at a time, the Total column always its full width."""
+        total_w, label_w, per_page = self._columns_for(w)
+        if per_page != self.per_page:
+            first = self.page * self.per_page  # (the first hole shown stays on the page shown)
+            self.page, self.per_page = first // per_page, per_page
+            self._build_cells()
+        shown_holes = max(1, self.columns - 2)
+        cell_w = max(1.0, min(CELL_WIDTH, (w - 60 - label_w - total_w) / shown_holes))
         top = h - (95 if h >= 600 else 62)
         room = max(1.0, top - BELOW_TABLE)
         shown = [row for row in range(self.rows) if room / self.rows >= 22 or row not in self.running_rows]
@@ -164,19 +231,23 @@ class ResultsView(UIView):
             for rows in ({0, 1}, self.player_rows, self.running_rows):  # alike rows alike
                 cells = [cell for cell in self.cells if cell.row in rows]
                 _fit_row([cell for cell in cells if cell.col == 0], label_w - 14, cell_h, 11)
-                _fit_row([cell for cell in cells if cell.col > 0], cell_w - 6, cell_h, 10)
+                _fit_row([cell for cell in cells if 0 < cell.col < self.columns - 1], cell_w - 6, cell_h, 10)
+                _fit_row([cell for cell in cells if cell.col == self.columns - 1], total_w - 6, cell_h, 10)
             for text, (full, size) in self._lines.items():
                 fit_width(text, full, w - 40, size)
+            fit_width(self.page_text, self.page_text.text, w - 40, 13)
             self.warning.width = min(1100, w - 40)
+        self._total_w = total_w
         return label_w, cell_w, cell_h, top, shown
 
     def on_draw_before_ui(self) -> None:
         theme = self.game.theme
         w, h = self.window.width, self.window.height
         label_w, cell_w, cell_h, top, shown = self._fit(w, h)
+        total_w = self._total_w
         self.title.position = (w / 2, (h + top) / 2)
         self.title.draw()
-        width = label_w + cell_w * (self.columns - 1)
+        width = label_w + cell_w * (self.columns - 2) + total_w
         left = (w - width) / 2
         height = len(shown) * cell_h
 
@@ -189,7 +260,7 @@ class ResultsView(UIView):
             arcade.draw_lrbt_rectangle_filled(left, left + width, y0, y0 + cell_h, colour)
         for col in range(self.columns + 1):
             x = x_of(col) if col < self.columns else left + width
-            arcade.draw_line(x, top, x, top - height, theme.rgba("text"), 1)
+            arcade.draw_line(x, top, x, top - height, theme.rgba("text"), 2 if col == self.columns - 1 else 1)
         for place in range(len(shown) + 1):
             below = shown[place] if place < len(shown) else -1
             strong = below in self.player_rows or below in (1, 2) or place == len(shown)
@@ -198,10 +269,14 @@ class ResultsView(UIView):
         places = {row: place for place, row in enumerate(shown)}
         for cell in self.cells:
             if cell.row in places:
-                x = x_of(cell.col) + 10 if cell.col == 0 else x_of(cell.col) + cell_w / 2
+                x = (x_of(cell.col) + 10 if cell.col == 0 else left + width - total_w / 2
+                     if cell.col == self.columns - 1 else x_of(cell.col) + cell_w / 2)
                 cell.text.position = (x, top - (places[cell.row] + 0.5) * cell_h)
                 cell.text.draw()
         bottom = top - height
+        if self.page_text.text:
+            self.page_text.position = (w / 2, bottom - 13)
+            self.page_text.draw()
         for text, dy in ((self.summary, 35), (self.best, 65), (self.note, 90)):
             text.position = (w / 2, bottom - dy)
             text.draw()

@@ -530,3 +530,31 @@ def test_a_long_course_s_scorecard_shows_its_holes_a_page_at_a_time_with_every_t
     if holes > 9:
         key(sized, arcade.key.PAGEUP)
         assert view.page == max(0, view.pages - 2)
+
+
+@pytest.mark.parametrize("size", [(640, 400), (1280, 720)])
+@pytest.mark.parametrize("name", ["\ufdfd" * 100, "W" * 100, ("Narrow Gates " * 7).strip()], ids=["wide", "W", "words"])
+def test_a_long_hole_name_is_cut_short_not_the_whole_hud_shrunk(sized, size, name):  # noqa: F811
+    """QA8: a valid 100-character hole name shrank the whole top bar (course, strokes and all) to
+    about 8 px. The name alone is cut short with an ellipsis; the rest keeps its size, and the
+    hole's number and par stay whole."""
+    from polygolf.game.views.play import HUD_FONT, HUD_READABLE
+
+    game = Game.load()
+    game.guide_seen = True
+    ScreenFlow(sized, game).new_round()
+    play = sized.current_view
+    resize(sized, *size)
+    play._hole_name = name
+    line = f"Hole 1 of 9: {name}  ·  Par 3"
+    play.place_hud({"course": "Meadow", "hole": line, "strokes": "0 strokes", "players": ""})
+    texts = play.hud_texts
+    assert texts["course"].font_size == texts["strokes"].font_size == HUD_FONT
+    assert texts["hole"].font_size >= HUD_READABLE
+    hole = texts["hole"].text
+    assert hole.startswith("Hole 1 of 9: ") and hole.endswith("  ·  Par 3")  # its number and par whole
+    assert hole == line or (hole.endswith("…  ·  Par 3") and len(hole) < len(line))
+    assert hole != line or size == (1280, 720) and name[0] == "N"  # (cut, but where it fits as it is)
+    assert texts["course"].right + 16 <= texts["hole"].left and texts["hole"].right + 16 <= texts["strokes"].left
+    play.on_draw()
+    play.close()

@@ -62,6 +62,7 @@ ZOOM_RANGE = (1.0, 6.0)  # times the fitted zoom
 ZOOM_STEP = 1.15  # per wheel notch
 PAN_KEYS = {arcade.key.LEFT: (-1, 0), arcade.key.RIGHT: (1, 0), arcade.key.UP: (0, 1), arcade.key.DOWN: (0, -1)}
 PAN_STEP = 0.15  # of the visible width per arrow-key press
+HUD_READABLE = 12  # the hole's line shrinks to this at the least before its name is cut short
 HUD_FONT, HUD_SMALLEST, HUD_MARGIN = 15, 10, 16  # the HUD line's font size, the smallest it shrinks to, and its gaps
 HINT_ALPHA = 120  # the aim hint: the arrow drawn this faintly
 
@@ -85,6 +86,7 @@ class PlayView(arcade.View):
                                   multiline=True, width=900, align="center")
         self.banner_time = 0.0
         self._hud_lines = {name: "" for name in self.hud_texts}  # as laid out (`place_hud`)
+        self._hole_name = ""  # the hole's name in its HUD line: what is cut short when the line is too long
         self._hud_laid_for: tuple[int, bool] = (0, False)  # window width, and whether the F3 panel showed
         self.hint_label = arcade.Text("", 0, 0, theme.rgba("text"), 11, anchor_x="center", anchor_y="center")
         self.overlay = False
@@ -220,6 +222,7 @@ class PlayView(arcade.View):
         if self.world is None:
             return
         spec, state = self.world.hole.spec, self.world.state
+        self._hole_name = spec.name
         extra = f" {penalty_text(state.penalties)}" if state.penalties else ""
         muted = "   [muted]" if self.game.sound.muted else ""
         thinking = "  ·  thinking…" if self.caddie.thinking else ""
@@ -241,14 +244,18 @@ class PlayView(arcade.View):
         texts = self.hud_texts
         for name in ("course", "hole", "strokes"):
             texts[name].text, texts[name].font_size = lines[name], HUD_FONT
-        widths = sum(texts[name].content_width for name in ("course", "hole", "strokes"))
+        # The hole's line counts for at most half the bar: a long name (100 wide characters is a valid
+        # one) is cut short with an ellipsis, not the whole bar shrunk to fit it (QA8: 8 px text).
+        widths = sum(texts[name].content_width for name in ("course", "strokes"))
+        widths += min(texts["hole"].content_width, w / 2)
         if widths + 4 * HUD_MARGIN > w:
             size = max(HUD_SMALLEST, HUD_FONT * (w - 4 * HUD_MARGIN) / max(widths, 1.0))
             for name in ("course", "hole", "strokes"):
                 texts[name].font_size = size
         left = HUD_MARGIN + texts["course"].content_width + HUD_MARGIN
         right = w - HUD_MARGIN - texts["strokes"].content_width - HUD_MARGIN
-        fit_width(texts["hole"], lines["hole"], max(right - left, 20.0), texts["hole"].font_size, HUD_SMALLEST)
+        fit_hole_line(texts["hole"], lines["hole"], self._hole_name, max(right - left, 20.0),
+                      texts["hole"].font_size, min(texts["hole"].font_size, HUD_READABLE))
         half = texts["hole"].content_width / 2
         centre = w / 2 if left <= w / 2 - half and w / 2 + half <= right else (left + right) / 2
         texts["hole"].x = centre
@@ -621,3 +628,25 @@ class PlayView(arcade.View):
         if self.finish_text.position != (w / 2, (h - HUD_HEIGHT) / 2):  # (the window changed size since)
             self.finish_text.position = (w / 2, (h - HUD_HEIGHT) / 2)
         draw_backed(self.finish_text, self.game.theme.rgba("panel"), pad=24.0)
+
+
+def fit_hole_line(text: arcade.Text, line: str, name: str, width: float, size: float, smallest: float) -> None:
+    """The HUD's hole line ('Hole 3 of 9: NAME  ·  Par 3') in `width` px: smaller down to `smallest`,
+    then the hole's name alone cut short with an ellipsis (the hole's number and par stay whole; a
+    line without the name is cut at its end, as `fit_width` cuts)."""
+    fit_width(text, line, width, size, smallest)
+    at = line.find(name) if name else -1
+    if text.text == line or at < 0:
+        return
+    head, tail = line[:at], line[at + len(name):]
+    fits, wide = 0, len(name)  # the most characters of the name kept that fit, and the fewest that do not
+    while wide - fits > 1:
+        keep = (fits + wide) // 2
+        text.text = f"{head}{name[:keep].rstrip()}…{tail}"
+        if text.content_width <= width:
+            fits = keep
+        else:
+            wide = keep
+    text.text = f"{head}{name[:fits].rstrip()}…{tail}"
+    if text.content_width > width:  # (not even the number and par fit: cut at the end)
+        fit_width(text, text.text, width, text.font_size, text.font_size)

@@ -13,6 +13,8 @@ import math
 import os
 import re
 import secrets
+import stat
+import time
 from datetime import datetime, timezone
 from functools import cache
 from pathlib import Path
@@ -114,6 +116,9 @@ class RoundRecord(_Strict):
         text = json.dumps(self.model_dump(mode="json"), indent=1)
         stamp = _file_safe(self.recorded_at.replace(":", "").replace("-", ""))
         course = _file_safe(self.course)[:MAX_FILE_COURSE] or "_"
+        linked = _save_linked(folder, text, stamp, course)
+        if linked is not None:
+            return linked
         n = 1
         while True:
             path = folder / (f"{stamp}-{course}.json" if n == 1 else f"{stamp}-{course}-{n}.json")
@@ -135,6 +140,57 @@ class RoundRecord(_Strict):
             path.unlink(missing_ok=True)  # (not a replay: the name goes back)
             raise
         return path
+
+
+def _save_linked(folder: Path, text: str, stamp: str, course: str) -> Path | None:
+    """The text written whole to a temporary file first, then given the first free name by a hard
+    link (which fails if the name is taken): a game killed at any point leaves no empty replay
+    (QA8: kill -9 between taking the name and writing it left a 0-byte one), only, at worst, a
+    temporary that `sweep_replays` clears. None where the folder's file system has no hard links
+    (the name is then taken first, as before)."""
+    tmp = folder / f".{stamp}-{course}-{os.getpid()}-{secrets.token_hex(4)}.tmp"
+    try:
+        with tmp.open("x", encoding="utf-8") as out:
+            out.write(text)
+        n = 1
+        while True:
+            path = folder / (f"{stamp}-{course}.json" if n == 1 else f"{stamp}-{course}-{n}.json")
+            try:
+                os.link(tmp, path)
+                return path
+            except FileExistsError:
+                n += 1
+            except OSError:  # (no hard links here: EPERM, ENOTSUP, EXDEV...)
+                return None
+    finally:
+        tmp.unlink(missing_ok=True)
+
+
+STALE = 60.0  # s: an empty replay or a temporary older than this is no save under way
+
+
+def sweep_replays(folder: Path, now: float | None = None) -> list[Path]:
+    """Clear what a game killed while it saved a round can leave in the replays folder: an empty
+    `*.json` (a name taken, the text never written) and a `.*.tmp` (the text, never renamed), once
+    older than STALE (younger, they may be another game's save under way). Never raises: what cannot
+    be read or removed is left. Returns what was removed."""
+    now = time.time() if now is None else now
+    gone = []
+    try:
+        found = list(folder.glob("*.json")) + list(folder.glob(".*.tmp"))
+    except OSError:
+        return gone
+    for path in found:
+        try:
+            facts = path.lstat()
+            if not stat.S_ISREG(facts.st_mode) or now - facts.st_mtime < STALE:
+                continue
+            if path.suffix == ".tmp" or facts.st_size == 0:
+                path.unlink()
+                gone.append(path)
+        except OSError:
+            continue
+    return gone
 
 
 def _file_safe(text: str) -> str:

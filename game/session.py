@@ -20,7 +20,16 @@ from polygolf.engine.loading.scene import ShapeSpec
 from polygolf.engine.loading.yamlsource import ContentError
 from polygolf.engine.physics.polygon import Vec
 from polygolf.game.golfer_process import GolferProcess
-from polygolf.game.record import BallEnd, HoleRecord, Input, RoundRecord, engine, fingerprint, utc_stamp
+from polygolf.game.record import (
+    BallEnd,
+    HoleRecord,
+    Input,
+    RoundRecord,
+    engine,
+    fingerprint,
+    sweep_replays,
+    utc_stamp,
+)
 from polygolf.game.shapes import CATALOGUE, labels_shape
 from polygolf.game.sound import ArcadePlayer, SoundBoard
 from polygolf.game.store import Best, Store, not_a_folder
@@ -498,6 +507,7 @@ class Game:
                    course_problems=[str(p) for p in course_problems],
                    store=store if store is not None else Store())
         game.apply_settings(game.store.load_settings())
+        sweep_replays(game.store.folder / "replays")  # (what a game killed while it saved left there)
         return game
 
     # -- settings ---------------------------------------------------------------------------------

@@ -1125,3 +1125,64 @@ def test_a_best_takes_milliseconds_at_ten_thousand_rounds(tmp_path):
         assert store.best_hole("meadow", hole, "Pentagon") is not None
     assert store.best_course("meadow", "Pentagon") is not None
     assert time.perf_counter() - started < 0.25  # (4 asks; 3 s each before, on a quiet machine)
+
+
+def _record(player: str = "Ann") -> RoundRecord:
+    return RoundRecord(recorded_at="2026-11-26T14:50:44", course="sandbox", course_name="Sandbox", fingerprint="f",
+                       shape_label="Pentagon", shape=PENTAGON, preset="fast", players=[player])
+
+
+def test_a_replay_s_name_is_taken_only_with_its_whole_text(tmp_path, monkeypatch):
+    """QA8: kill -9 between taking a replay's name and writing its text left a 0-byte replay. The
+    text is written to a temporary first and linked to the free name: a replay never exists empty."""
+    folder = tmp_path / "replays"
+    text = json.dumps(_record().model_dump(mode="json"), indent=1)
+    links = []
+    link = os.link
+
+    def checked(source, target):
+        assert Path(source).read_text(encoding="utf-8") == text  # whole before it has the name
+        assert all(p.stat().st_size > 0 for p in Path(target).parent.glob("*.json"))  # never an empty one
+        links.append(Path(target).name)
+        link(source, target)
+
+    monkeypatch.setattr(os, "link", checked)
+    first, second = _record().save(folder), _record().save(folder)
+    assert links == [first.name, "20261126T145044-sandbox.json", second.name]  # (the second met the first's name)
+    assert sorted(p.name for p in folder.iterdir()) == sorted([first.name, second.name])  # no temporary left
+    assert load_record(second).players == ["Ann"]
+
+
+def test_a_replay_is_saved_where_the_file_system_has_no_hard_links(tmp_path, monkeypatch):
+    def refuse(source, target):
+        raise PermissionError(1, "Operation not permitted")
+
+    monkeypatch.setattr(os, "link", refuse)
+    path = _record().save(tmp_path)
+    assert load_record(path).players == ["Ann"] and [p.name for p in tmp_path.iterdir()] == [path.name]
+
+
+def test_empty_replays_and_stale_temporaries_are_cleared_at_start_and_nothing_else():
+    """QA8: what kill -9 during a save left (an empty `.json`, a hidden `.tmp`) stayed for ever. At
+    start, those older than a minute go; younger ones may be another game's save under way."""
+    import time
+
+    from polygolf.game.record import STALE, sweep_replays
+
+    folder = data_dir() / "replays"
+    folder.mkdir(parents=True)
+    good = _record().save(folder)
+    old = time.time() - 2 * STALE
+    files = {"empty-old.json": b"", "empty-new.json": b"", ".a-1-ff.tmp": b"{", ".b-2-ee.tmp": b"{",
+             "notes.txt": b""}
+    for name, data in files.items():
+        (folder / name).write_bytes(data)
+    for name in ("empty-old.json", ".a-1-ff.tmp", "notes.txt"):
+        os.utime(folder / name, (old, old))
+    os.utime(good, (old, old))
+    (folder / "dir.json").mkdir()
+    os.utime(folder / "dir.json", (old, old))
+    Game.load()
+    assert sorted(p.name for p in folder.iterdir()) == sorted([good.name, "empty-new.json", ".b-2-ee.tmp",
+                                                               "notes.txt", "dir.json"])
+    assert sweep_replays(folder / "nowhere") == []  # (no folder: nothing, no error)

@@ -24,7 +24,7 @@ from polygolf.engine.physics.body import ANGLE, ANGLE0, ASLEEP, COLUMNS, INV_MAS
 from polygolf.engine.physics.geometry import ConvexSet, ShapeTable, face_line, norm, pose_piece, span_on_line
 from polygolf.engine.physics.grid import BoxGrid, FatBoxes, look_up_walls, walls_near
 from polygolf.engine.physics.jit import inlined_kernel, inlined_leaf, kernel, leaf_kernel, warm_up
-from polygolf.engine.physics.seams import PROBE
+from polygolf.engine.physics.seams import PROBE, REFLEX
 from polygolf.engine.physics.settings import GAP_TOLERANCE
 
 MAX_ITERATIONS = 24
@@ -526,8 +526,8 @@ def length_near(x: float, y: float, plus: float, more: float, bound: float, othe
 def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np.ndarray, body_first: np.ndarray,
                     state: np.ndarray, rows: np.ndarray, radius: np.ndarray, least: float, grid: tuple,
                     fat_boxes: tuple, seen: np.ndarray, found: np.ndarray, wv: np.ndarray, wn: np.ndarray,
-                    wfirst: np.ndarray, internal: np.ndarray, target: float, tolerance: float, allowance: float,
-                    far: float, out: np.ndarray, work: tuple, boxes: np.ndarray) -> tuple[bool, int]:
+                    wfirst: np.ndarray, internal: np.ndarray, hidden: np.ndarray, target: float, tolerance: float,
+                    allowance: float, far: float, out: np.ndarray, work: tuple, boxes: np.ndarray) -> tuple[bool, int]:
     """For each body q of `rows` (a `body.BodyStore` state, from its pose at the substep's start to
     its pose now; shape q of a `ShapeTable`, bounding radius radius[q]), the earliest impact of any
     of its pieces with the wall pieces its swept box meets in `grid` (the walls' `BoxGrid.arrays`,
@@ -586,6 +586,9 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
                     continue  # the quick answer first, without the call
                 t = time_of_impact(lv, ln, first[i], first[i + 1], reach[i], start, end, wv, wn, wfirst[w],
                                    wfirst[w + 1], target, tolerance, allowance, work)
+                if t < 1.0 and _through_covered_face(lv, ln, first[i], first[i + 1], start, end, t, wv, wn, wfirst[w],
+                                                     wfirst[w + 1], internal, hidden, work):
+                    continue
                 if t < 1.0:  # unless the piece carries on a surface the body lies by: then as that surface
                     if math.isnan(beside):
                         beside = max(_level_beside(lv, ln, first, body_first, q, start, wv, wn, wfirst, internal,
@@ -599,6 +602,31 @@ def first_wall_hits(lv: np.ndarray, ln: np.ndarray, first: np.ndarray, reach: np
         if best < 1.0:
             hits += 1
     return moved, hits
+
+
+@inlined_leaf
+def _through_covered_face(lv: np.ndarray, ln: np.ndarray, s: int, e: int, start: np.ndarray, end: np.ndarray,
+                          t: float, wv: np.ndarray, wn: np.ndarray, ws: int, we: int, internal: np.ndarray,
+                          hidden: np.ndarray, work: tuple) -> bool:
+    """Whether the piece (rows s..e, body frame), where its motion start -> end brings it within the
+    target of wall piece ws..we (fraction t), lies nearest that piece across a face another piece
+    covers (`internal`, physics.seams), neither end of which is a reflex corner: it comes from
+    inside the one that covers it, whose own time of impact answers for the solid (QA: a square sunk
+    1 mm in a rail of flush triangles passed from each block's upper triangle into its lower one
+    across their diagonal and was put back there, 157 mm behind at fast). At an inside corner
+    (`hidden` marks seams.REFLEX) the covering piece answers only along its own faces: a needle
+    sliding down one leg of a V, its tip sunk in it just past the other leg's covered edge, goes on
+    into the other leg, which must stop it."""
+    posed, seps = work[0], work[1]
+    x, y, a = start[0] + t * (end[0] - start[0]), start[1] + t * (end[1] - start[1]), start[2] + t * (end[2] - start[2])
+    _separations(lv, ln, s, e, x, y, a, wv, wn, ws, we, 0.0, 0.0, 0.0, True, posed[0], posed[1], posed[2], posed[3],
+                 True, seps)
+    nearest, face = -math.inf, -1
+    for k in range(we - ws + e - s):  # (the wall piece's faces first)
+        if seps[k] > nearest:
+            nearest, face = seps[k], k
+    n = we - ws
+    return face < n and internal[ws + face] and hidden[ws + face] != REFLEX and hidden[ws + (face + 1) % n] != REFLEX
 
 
 @leaf_kernel
@@ -907,7 +935,8 @@ def _warm() -> None:
     first_wall_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,
                     table.body_first, state, np.array([0, 1], dtype=np.int64), np.full(2, 0.71), 0.005, grid.arrays,
                     FatBoxes().of(state, 1), np.zeros(1, dtype=np.bool_), np.empty(1, dtype=np.int64), wall.verts,
-                    wall.normals, wall.first, np.zeros(4, dtype=np.bool_), 0.005, 0.001, 0.005, 0.0025, np.empty(2),
+                    wall.normals, wall.first, np.zeros(4, dtype=np.bool_), np.zeros(4, dtype=np.int8), 0.005, 0.001,
+                    0.005, 0.0025, np.empty(2),
                     toi_work(4), np.empty((2, 4)))
     first_pair_hit(*args, start, end, *args, still, still, 0.005, 0.001, 0.005, toi_work(4))
     body_pair_hits(table.pieces.verts, table.pieces.normals, table.pieces.first, table.pieces.reach,

@@ -75,11 +75,11 @@ def sweep(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inpu
 def _sweep_walls(state: np.ndarray, shapes: tuple, walls: tuple, fat_boxes: tuple, inputs: tuple) -> tuple[bool, int]:
     """Every body against the walls its motion sweeps (`toi.first_wall_hits`)."""
     lv, ln, first, reach, body_first, rows, radius, _, _, _, _ = shapes
-    (wv, wn, wfirst, internal, _), _, _, _, _, grid = walls
+    (wv, wn, wfirst, internal, hidden), _, _, _, _, grid = walls
     seen, found, hits, work, boxes, _, _, _, _ = inputs
     # No pair can need sweeping while no body steps half the linear slop.
     return first_wall_hits(lv, ln, first, reach, body_first, state, rows, radius, LINEAR_SLOP, grid, fat_boxes, seen,
-                           found, wv, wn, wfirst, internal, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP,
+                           found, wv, wn, wfirst, internal, hidden, TOI_TARGET, 0.25 * LINEAR_SLOP, LINEAR_SLOP,
                            0.5 * LINEAR_SLOP, hits, work, boxes)
 
 

@@ -54,10 +54,12 @@ CREATE TABLE IF NOT EXISTS holes (
     hole TEXT NOT NULL, name TEXT NOT NULL, par INTEGER NOT NULL, strokes INTEGER NOT NULL,
     penalties INTEGER NOT NULL, picked_up INTEGER NOT NULL, PRIMARY KEY (round_id, seat, position));
 CREATE INDEX IF NOT EXISTS holes_best ON holes (hole, strokes);
-CREATE INDEX IF NOT EXISTS holes_best_at ON holes (hole, position, strokes);
-CREATE INDEX IF NOT EXISTS cards_best ON cards (strokes);
-CREATE INDEX IF NOT EXISTS rounds_best ON rounds (course, shape, finished_at);
 """
+# The indexes a best of one hole or course is found by (QA8): made where they can be, when a game first
+# opens the database; where they cannot (a read-only file, another game holding the write lock), the
+# bests are worked out from the whole history as before, never not read.
+INDEXES = {"holes_best_at": "holes (hole, position, strokes)", "cards_best": "cards (strokes)",
+           "rounds_best": "rounds (course, shape, finished_at)"}
 
 
 @dataclass(frozen=True, slots=True)
@@ -139,6 +141,7 @@ class Store:
         # did (with a warning); a database that could not be read at all did not.
         self.done = True
         self._locked_until = 0.0  # (time.monotonic(): until then, a lock is waited for briefly)
+        self._indexed = False  # whether the last connection found every one of INDEXES
         # Settings chosen but not written yet (the database was locked): written with the next save,
         # or by `flush_settings` (the game's close), and read back over what the database holds.
         self.pending: dict[str, object] = {}
@@ -163,6 +166,7 @@ class Store:
         db = sqlite3.connect(self.path, timeout=wait, isolation_level=None)
         try:
             db.executescript(SCHEMA)
+            self._indexed = self._index(db)
             db.execute("BEGIN IMMEDIATE" if write else "BEGIN")
             row = db.execute("SELECT value FROM meta WHERE key = 'schema'").fetchone()
             if row is None:
@@ -174,6 +178,18 @@ class Store:
             db.close()
             raise
         return db
+
+    def _index(self, db: sqlite3.Connection) -> bool:
+        """Make the INDEXES not made yet (if the database can be written now); whether all are there."""
+        made = {row[0] for row in db.execute("SELECT name FROM sqlite_master WHERE type = 'index'")}
+        for name, on in INDEXES.items():
+            if name not in made:
+                try:
+                    db.execute(f"CREATE INDEX IF NOT EXISTS {name} ON {on}")
+                    made.add(name)
+                except sqlite3.OperationalError:  # (read-only, or locked: another time)
+                    pass
+        return made >= set(INDEXES)
 
     def _identity(self) -> tuple[int, int] | None:
         """Which file the database is now (device and inode), None if there is none."""
@@ -356,40 +372,11 @@ class Store:
     def bests(self, course: str | None = None, shape: str | None = None) -> list[Best]:
         """Per hole and per whole course: the fewest strokes with each shape, the earliest first on a
         tie. Course bests count only rounds that played every hole."""
-        def work(db: sqlite3.Connection) -> list[Best]:
-            where, args = [], []
-            if course is not None:
-                where.append("r.course = ?")
-                args.append(course)
-            if shape is not None:
-                where.append("r.shape = ?")
-                args.append(shape)
-            cond = (" AND " + " AND ".join(where)) if where else ""
-            out = []
-            holes = db.execute(
-                "SELECT r.course, h.hole, h.position, h.name, r.shape, h.strokes, h.par, c.name, r.finished_at "
-                "FROM holes h JOIN rounds r ON r.id = h.round_id JOIN cards c ON c.round_id = h.round_id "
-                f"AND c.seat = h.seat WHERE {_typed(HOLE_TYPES)} AND {HOLE_VALUES}{cond} "
-                "ORDER BY r.course, h.position, r.shape, h.strokes, r.finished_at, r.id, h.seat", args).fetchall()
-            seen = set()
-            for row in holes:
-                key = (row[0], row[1], row[4])
-                if key not in seen:
-                    seen.add(key)
-                    out.append(Best(row[0], row[1], row[2], row[3], row[4], row[5], row[6], row[7], row[8]))
-            rounds = db.execute(
-                "SELECT r.course, r.course_name, r.shape, c.strokes, c.par, c.name, r.finished_at FROM cards c "
-                f"JOIN rounds r ON r.id = c.round_id WHERE r.complete = 1 AND {_typed(ROUND_TYPES)} AND {ROUND_VALUES}"
-                f"{cond} "
-                "ORDER BY r.course, r.shape, c.strokes, r.finished_at, r.id, c.seat", args).fetchall()
-            seen = set()
-            for row in rounds:
-                if (row[0], row[2]) not in seen:
-                    seen.add((row[0], row[2]))
-                    out.append(Best(row[0], None, None, row[1], row[2], row[3], row[4], row[5], row[6]))
-            return out
+        return self._transaction(lambda db: _every_best(db, course, shape), [], "read the bests", write=False)
 
-        return self._transaction(work, [], "read the bests", write=False)
+    def _every_best_of(self, db: sqlite3.Connection, course: str, shape: str, hole: str | None) -> Best | None:
+        """Where the INDEXES are not there: the best from the whole history, as `bests` finds it."""
+        return next((b for b in _every_best(db, course, shape) if b.hole == hole), None)
 
     def best_hole(self, course: str, hole: str, shape: str) -> Best | None:
         """The best `bests(course, shape)` gives for `hole` (the same row, by the same rules: the
@@ -406,6 +393,8 @@ class Store:
                     "ON h.round_id = r.id AND c.round_id = h.round_id AND c.seat = h.seat")
 
         def work(db: sqlite3.Connection) -> Best | None:
+            if not self._indexed:
+                return self._every_best_of(db, course, shape, hole)
             found = db.execute(f"SELECT h.position, h.strokes {tables} WHERE h.hole = ? AND {checks} "
                                "ORDER BY h.position, h.strokes LIMIT 1", (hole, course, shape)).fetchone()
             if found is None:
@@ -431,6 +420,8 @@ class Store:
         by_round = "FROM rounds r INDEXED BY rounds_best CROSS JOIN cards c ON c.round_id = r.id"
 
         def work(db: sqlite3.Connection) -> Best | None:
+            if not self._indexed:
+                return self._every_best_of(db, course, shape, None)
             after = None
             while True:
                 above = "" if after is None else " AND c.strokes > ?"
@@ -454,3 +445,38 @@ class Store:
     def round_count(self) -> int:
         return self._transaction(lambda db: db.execute("SELECT COUNT(*) FROM rounds").fetchone()[0], 0,
                                  "count the rounds", write=False)
+
+
+def _every_best(db: sqlite3.Connection, course: str | None, shape: str | None) -> list[Best]:
+    """Every best (per hole, then per course) of `course` and `shape` (None: any), from the whole history."""
+    where, args = [], []
+    if course is not None:
+        where.append("r.course = ?")
+        args.append(course)
+    if shape is not None:
+        where.append("r.shape = ?")
+        args.append(shape)
+    cond = (" AND " + " AND ".join(where)) if where else ""
+    out = []
+    holes = db.execute(
+        "SELECT r.course, h.hole, h.position, h.name, r.shape, h.strokes, h.par, c.name, r.finished_at "
+        "FROM holes h JOIN rounds r ON r.id = h.round_id JOIN cards c ON c.round_id = h.round_id "
+        f"AND c.seat = h.seat WHERE {_typed(HOLE_TYPES)} AND {HOLE_VALUES}{cond} "
+        "ORDER BY r.course, h.position, r.shape, h.strokes, r.finished_at, r.id, h.seat", args).fetchall()
+    seen = set()
+    for row in holes:
+        key = (row[0], row[1], row[4])
+        if key not in seen:
+            seen.add(key)
+            out.append(Best(row[0], row[1], row[2], row[3], row[4], row[5], row[6], row[7], row[8]))
+    rounds = db.execute(
+        "SELECT r.course, r.course_name, r.shape, c.strokes, c.par, c.name, r.finished_at FROM cards c "
+        f"JOIN rounds r ON r.id = c.round_id WHERE r.complete = 1 AND {_typed(ROUND_TYPES)} AND {ROUND_VALUES}"
+        f"{cond} "
+        "ORDER BY r.course, r.shape, c.strokes, r.finished_at, r.id, c.seat", args).fetchall()
+    seen = set()
+    for row in rounds:
+        if (row[0], row[2]) not in seen:
+            seen.add((row[0], row[2]))
+            out.append(Best(row[0], None, None, row[1], row[2], row[3], row[4], row[5], row[6]))
+    return out

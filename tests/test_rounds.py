@@ -1083,15 +1083,19 @@ def _history(folder: Path, seed: int) -> None:
                                (rid, seat, position, hole, hole.upper(), value))
 
 
-@pytest.mark.parametrize("many_ties", [0, 10**9])
+@pytest.mark.parametrize("many_ties", [0, 10**9, None])
 @pytest.mark.parametrize("seed", range(4))
 def test_a_best_asked_alone_is_the_one_the_whole_history_gives(tmp_path, monkeypatch, seed, many_ties):
     """QA8: best_hole and best_course worked out every best from the whole history (3 s at 10 000
     rounds, on the window's thread). Asked by index now, they give the very rows `bests` gives: the
-    same place, strokes and holder on every tie rule, both ways of finding who was first."""
+    same place, strokes and holder on every tie rule, both ways of finding who was first, and where
+    an index cannot be made (None: a read-only file), from the whole history as before."""
     import polygolf.game.store as store_module
 
-    monkeypatch.setattr(store_module, "MANY_TIES", many_ties)
+    if many_ties is None:
+        monkeypatch.setattr(store_module, "INDEXES", {**store_module.INDEXES, "unmade": "nowhere (x)"})
+    else:
+        monkeypatch.setattr(store_module, "MANY_TIES", many_ties)
     _history(tmp_path, seed)
     store = Store(tmp_path, echo=False)
     every = store.bests()

@@ -380,13 +380,8 @@ def test_a_shape_sunk_on_a_rail_of_flush_triangles_slides_on_time(preset, shape,
     passed from the upper triangle into the lower one across their diagonal (a covered face), and
     the sweep put it back there: a square 157 mm behind at fast, 74 mm at balanced; a hexagon 23 mm
     at accurate."""
-    from polygolf.engine.loading.scene import ShapeSpec
-
     shape = dict(shape, radius=0.2)
-    sides = shape.get("regular", 8)
-    angle = -90.0 + 180.0 / sides
-    a = math.radians(angle)
-    lowest = min(math.sin(a) * x + math.cos(a) * y for x, y in ShapeSpec(**shape).outline())
+    angle = -90.0 + 180.0 / shape.get("regular", 8)
     walls = []
     for k in range(20):
         x0, x1 = -0.5 + 0.5 * k, 0.5 * k
@@ -394,16 +389,7 @@ def test_a_shape_sunk_on_a_rail_of_flush_triangles_slides_on_time(preset, shape,
         halves = ([block[0], block[1], block[2]], [block[0], block[2], block[3]]) if diagonal == "up" else \
             ([block[0], block[1], block[3]], [block[1], block[2], block[3]])
         walls += [{"polygon": half, "restitution": 1.0, "friction": 0.0} for half in halves]
-    scene = Scene.model_validate({
-        "name": "triangle-rail", "walls": walls,
-        "bodies": [{"name": "ball", "shape": shape, "angle": angle, "position": [0.0, -lowest - 0.001],
-                    "velocity": [25.0, 0.0], "restitution": 0.6, "friction": 0.0}]})
-    with build_scene(scene, preset) as sim:
-        ball = sim.body("ball")
-        for frame in range(1, 19):
-            sim.step()
-            assert ball.x == pytest.approx(25.0 * frame / 60.0, abs=1e-6), frame
-        assert (ball.vx, ball.vy, ball.spin) == (25.0, 0.0, 0.0)
+    _assert_slides_on_time(preset, shape, angle, 0.001, 25.0, walls, 0.6, 0.0)
 
 
 @pytest.mark.parametrize("preset", PRESET_NAMES)
@@ -1001,21 +987,30 @@ def test_a_star_sliding_sunk_on_two_tips_over_narrow_flush_boxes_stays_on_time(p
     over a row of flush boxes as narrow as 5 cm. At fast a tip passed a narrow box within a substep,
     and the box beyond it, joined to the floor the star lay by only through the narrow one, was not
     taken as the same floor: the sweep put the star back at its seam, up to 0.34 m behind."""
-    from polygolf.engine.loading.scene import ShapeSpec
 
     xs = [-0.664498, -0.233748, 0.860717, 1.944998, 2.051393, 3.228858, 3.771594, 4.16763, 4.224993, 4.275034,
           5.085459, 5.185919, 5.849737, 5.926974, 6.571397, 6.680676, 7.001373, 8.149164, 8.424255, 8.615543,
           8.780635, 8.858597, 9.156113, 10.307508]
     depth, speed, angle = 0.4127146633127921, 23.709751227486993, -22.5
     shape = {"star": [8, 3], "radius": 0.36449810760716944}
-    a = math.radians(angle)
-    lowest = min(math.sin(a) * x + math.cos(a) * y for x, y in ShapeSpec(**shape).outline())
     walls = [{"box": {"center": [(p + q) / 2, -depth / 2], "half": [(q - p) / 2, depth / 2]}, "restitution": 0.5,
               "friction": 0.0} for p, q in zip(xs, xs[1:])]
+    _assert_slides_on_time(preset, shape, angle, 0.0031374671030305703, speed, walls, 0.6, 0.0)
+
+
+def _assert_slides_on_time(preset: str, shape: dict, angle: float, sunk: float, speed: float, walls: list,
+                           restitution: float, friction: float) -> None:
+    """A ball of `shape` turned `angle` (degrees), its lowest point `sunk` below y = 0 (the top of
+    `walls`), sliding along x at `speed`: where free motion puts it every frame for 0.3 s, its
+    velocity and spin untouched."""
+    from polygolf.engine.loading.scene import ShapeSpec
+
+    a = math.radians(angle)
+    lowest = min(math.sin(a) * x + math.cos(a) * y for x, y in ShapeSpec(**shape).outline())
     scene = Scene.model_validate({
-        "name": "star-slide", "walls": walls,
-        "bodies": [{"name": "ball", "shape": shape, "angle": angle, "position": [0.0, -lowest - 0.0031374671030305703],
-                    "velocity": [speed, 0.0], "restitution": 0.6, "friction": 0.0}]})
+        "name": "slide", "walls": walls,
+        "bodies": [{"name": "ball", "shape": shape, "angle": angle, "position": [0.0, -lowest - sunk],
+                    "velocity": [speed, 0.0], "restitution": restitution, "friction": friction}]})
     with build_scene(scene, preset) as sim:
         ball = sim.body("ball")
         for frame in range(1, 19):
@@ -1030,24 +1025,12 @@ def test_a_star_tip_sunk_just_short_of_a_seam_lies_on_the_floor(preset):
     2.1 mm short of a seam: nearer the covered side face of its box (and the star's own cut between
     two pieces, parallel to it) than the top, so the star was not seen lying on the floor, and the
     box after the next seam put it back 72 mm at fast (frame 18)."""
-    from polygolf.engine.loading.scene import ShapeSpec
 
     xs = [-0.4666189878834811, -0.31386678469725265, 0.754718420414974, 1.6933858694225739, 1.8441128471287098,
           2.560265309552831, 3.667187888851384, 4.194288745318153, 4.982900984398106, 5.062260178425308,
           5.9477466594575485, 6.896567170155041, 7.404750813723904]
     depth, speed, angle, sunk = 0.35695849508392274, 17.29550878876301, 67.5, 0.0023223933999038326
     shape = {"star": [8, 3], "radius": 0.1666189878834811}
-    a = math.radians(angle)
-    lowest = min(math.sin(a) * x + math.cos(a) * y for x, y in ShapeSpec(**shape).outline())
     walls = [{"box": {"center": [(p + q) / 2, -depth / 2], "half": [(q - p) / 2, depth / 2]}, "restitution": 1.0,
               "friction": 0.0} for p, q in zip(xs, xs[1:])]
-    scene = Scene.model_validate({
-        "name": "star-slide", "walls": walls,
-        "bodies": [{"name": "ball", "shape": shape, "angle": angle, "position": [0.0, -lowest - sunk],
-                    "velocity": [speed, 0.0], "restitution": 0.0, "friction": 1.0}]})
-    with build_scene(scene, preset) as sim:
-        ball = sim.body("ball")
-        for frame in range(1, 19):
-            sim.step()
-            assert ball.x == pytest.approx(speed * frame / 60.0, abs=1e-6), frame
-        assert (ball.vx, ball.vy, ball.spin) == (speed, 0.0, 0.0)
+    _assert_slides_on_time(preset, shape, angle, sunk, speed, walls, 0.0, 1.0)

@@ -1030,3 +1030,20 @@ def test_a_content_name_of_fillers_or_blank_braille_is_refused(blank):
     with pytest.raises(ValidationError, match="a name needs a letter, digit or sign that shows"):
         TypeAdapter(Name).validate_python(blank)
     assert TypeAdapter(Name).validate_python("Ann\u3164Lee") == "Ann\u3164Lee"  # (kept inside a name that shows)
+
+
+def test_two_bodies_of_one_name_are_named_on_the_bodies_line(tmp_path, capsys):
+    """QA8: the scene check said 'line 1: (top level)'; the error belongs to the bodies, both named."""
+    path = tmp_path / "dup.yaml"
+    path.write_text(textwrap.dedent("""\
+        name: dup
+        walls:
+          - box: {center: [0, -0.5], half: [5, 0.5]}
+        bodies:
+          - {name: left, shape: {regular: 5, radius: 0.2}, position: [-1, 1]}
+          - {name: right, shape: {regular: 5, radius: 0.2}, position: [1, 1]}
+          - {name: left, shape: {regular: 5, radius: 0.2}, position: [0, 2]}
+        """))
+    assert main(["simulate", str(path), "--seconds", "0.1"]) == 2  # (the command line's code for bad input)
+    assert capsys.readouterr().err.strip() == \
+        f"polygolf: {path}:4: bodies: bodies[0] and bodies[2] are both named 'left'"

@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import Annotated, Any, Literal
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
 from polygolf.engine.assembly.assemble import assemble
 from polygolf.engine.assembly.simulation import Simulation
@@ -226,14 +226,17 @@ class Scene(Strict_):
                               np.array([polygon.bounding_radius(o) for o in outlines]))
         return self
 
-    @model_validator(mode="after")
-    def _unique_names(self) -> Scene:
-        seen = set()
-        for body in self.bodies:
+    @field_validator("bodies")
+    @classmethod
+    def _unique_names(cls, bodies: list[BodySpec]) -> list[BodySpec]:
+        """(A check of the list, not of the whole scene: the error names the bodies' line and both
+        bodies, not line 1.)"""
+        seen: dict[str, int] = {}
+        for k, body in enumerate(bodies):
             if body.name in seen:
-                raise ValueError(f"two bodies are named {body.name!r}")
-            seen.add(body.name)
-        return self
+                raise ValueError(f"bodies[{seen[body.name]}] and bodies[{k}] are both named {body.name!r}")
+            seen[body.name] = k
+        return bodies
 
 
 def load_scene(path: str | Path) -> Scene:

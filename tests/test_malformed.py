@@ -1047,3 +1047,20 @@ def test_two_bodies_of_one_name_are_named_on_the_bodies_line(tmp_path, capsys):
     assert main(["simulate", str(path), "--seconds", "0.1"]) == 2  # (the command line's code for bad input)
     assert capsys.readouterr().err.strip() == \
         f"polygolf: {path}:4: bodies: bodies[0] and bodies[2] are both named 'left'"
+
+
+@pytest.mark.parametrize("center", [[3.0, -0.5], [0.0, 0.0]])
+def test_a_box_too_thin_for_its_place_is_said_to_be_so(tmp_path, capsys, center):
+    """QA8: a box 1e-300 m thick (within the limits: half > 0) was refused as 'polygon has repeated
+    vertices', words for a polygon its author never wrote."""
+    path = tmp_path / "thin.yaml"
+    path.write_text(textwrap.dedent(f"""\
+        name: thin
+        walls:
+          - box: {{center: {center}, half: [1.0e-300, 5.0]}}
+        bodies:
+          - {{name: a, shape: {{regular: 5, radius: 0.2}}, position: [-1, 1]}}
+        """))
+    assert main(["simulate", str(path), "--seconds", "0.1"]) == 2
+    assert capsys.readouterr().err.strip() == (f"polygolf: {path}:3: walls[0].box: a box of half-size [1e-300, 5.0] "
+                                               "is too thin to have an area where it stands")

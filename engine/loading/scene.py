@@ -137,6 +137,17 @@ class BoxSpec(Strict_):
         (cx, cy), (hx, hy) = self.center, self.half
         return list(polygon.placed(((-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy)), cx, cy, math.radians(self.angle)))
 
+    @model_validator(mode="after")
+    def _has_area(self) -> BoxSpec:
+        """A box too thin for its place: its corners meet (or enclose nothing) in floating point. Said
+        as such, not as the polygon it makes (QA8: 1e-300 m thick was "repeated vertices")."""
+        try:
+            polygon.normalise(self.outline())
+        except polygon.PolygonError:
+            raise ValueError(f"a box of half-size {list(self.half)} is too thin to have an area where it stands") \
+                from None
+        return self
+
 
 class WallSpec(Strict_):
     box: BoxSpec | None = None

@@ -174,3 +174,19 @@ def test_hole_world_holds_only_what_the_hole_needs(library, courses):
         assert speed == pytest.approx(math.hypot(7.0, 2.5), rel=1e-9)  # constant velocity until it hits
     finally:
         launcher.close()
+
+
+@pytest.mark.parametrize(("item", "message"), [
+    ("{box: {center: [-5.0, 0], half: [1.0, 1.0]}}", "the tee at tiles[0]'s centre is blocked by an obstacle"),
+    ("{polygon: [[-6.5, -0.2], [-3.5, -0.2], [-3.5, 0.2], [-6.5, 0.2]], hazard: windmill, speed: 1.0}",
+     "the tee at tiles[0]'s centre is within a windmill's sweep"),
+])
+def test_a_pattern_reaching_into_another_tile_is_blamed_for_what_it_blocks(tmp_path, library, item, message):
+    """QA8: an obstacle of tiles[1]'s pattern over the tee was blamed on tiles[0].pattern, which
+    had none."""
+    path = write_hole(tmp_path, GOOD.replace("open-w}", "open-w, pattern: reach}"))
+    text = (tmp_path / "tiles.yaml").read_text().replace("\npatterns:\n", f"\npatterns:\n  reach:\n    - {item}\n", 1)
+    (tmp_path / "tiles.yaml").write_text(text)
+    with pytest.raises(ContentError) as info:
+        load_hole(path, load_library(tmp_path / "tiles.yaml"))
+    assert (info.value.line, info.value.field, info.value.message) == (5, "tiles[1].pattern", message), str(info.value)

@@ -21,7 +21,7 @@ from polygolf.engine.loading.course import (
 )
 from polygolf.engine.loading.paths import HOLES_DIR, content_roots, misplaced_folders
 from polygolf.engine.loading.yamlsource import ContentError, format_loc, line_of, load_yaml, validate
-from polygolf.engine.physics.polygon import bounding_radius
+from polygolf.engine.physics.polygon import about_centroid, bounding_radius, centroid, placed
 from polygolf.engine.physics.settings import LINEAR_SLOP
 
 RANDOM_NINE_ID = "random-nine"  # the course the game builds from a seed (`golf.nine`): no content's
@@ -62,14 +62,41 @@ def _check_tee_and_cup(parsed: ParsedHole, layout: HoleLayout, library: TileLibr
     last = len(parsed.spec.tiles) - 1
     for (x, y), what, i in ((layout.tee, "tee", 0), (layout.cup, "cup", last)):
         need = library.ball.radius if what == "tee" else library.cup.radius
-        loc = ("tiles", i, "pattern")
         if point_clearance(layout, x, y) < need:
-            raise parsed.error(loc, f"the {what} at the tile's centre is blocked by an obstacle")
+            k = _pattern_reaching(parsed, library, layout, "wall", x, y, need, i)
+            raise parsed.error(("tiles", k, "pattern"), f"the {what} at {_tile_centre(k, i)} is blocked by an obstacle")
         if water and point_clearance(layout, x, y, water) < need:
-            raise parsed.error(loc, f"the {what} at the tile's centre is in or at the edge of water")
+            k = _pattern_reaching(parsed, library, layout, "water", x, y, need, i)
+            raise parsed.error(("tiles", k, "pattern"), f"the {what} at {_tile_centre(k, i)} is in or at the edge of "
+                                                        "water")
         for outline, (px, py), _ in layout.windmills:
             if math.hypot(x - px, y - py) < bounding_radius(outline) + need:
-                raise parsed.error(loc, f"the {what} at the tile's centre is within a windmill's sweep")
+                k = _pattern_reaching(parsed, library, layout, "windmill", x, y, need, i)
+                raise parsed.error(("tiles", k, "pattern"), f"the {what} at {_tile_centre(k, i)} is within a "
+                                                            "windmill's sweep")
+
+
+def _tile_centre(k: int, i: int) -> str:
+    """Where the tee or cup of tile i is, said from tile k's pattern that reaches it."""
+    return "the tile's centre" if k == i else f"tiles[{i}]'s centre"
+
+
+def _pattern_reaching(parsed: ParsedHole, library: TileLibrary, layout: HoleLayout, hazard: str, x: float, y: float,
+                      need: float, default: int) -> int:
+    """The first tile whose pattern puts a `hazard` item within `need` of (x, y) (a windmill: its
+    sweep), else `default`: a pattern's item may reach far past its tile (QA8: a box 2 km wide on
+    tiles[1] blocked the tee and was blamed on tiles[0], which has no pattern)."""
+    size = layout.tile_size
+    for k, tile in enumerate(parsed.spec.tiles):
+        cx, cy = (tile.at[0] + 0.5) * size, (tile.at[1] + 0.5) * size
+        items = [placed(item.outline(), cx, cy, math.radians(tile.rotate)) for item in library.patterns[tile.pattern]
+                 if item.hazard == hazard]
+        if hazard == "windmill":
+            if any(math.dist((x, y), centroid(o)) < bounding_radius(about_centroid(o)[0]) + need for o in items):
+                return k
+        elif items and point_clearance(layout, x, y, items) < need:
+            return k
+    return default
 
 
 # The effects a hole's own content brings (its tiles' hazards, its launcher): a list of effects must

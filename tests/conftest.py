@@ -4,6 +4,7 @@ only render use ARCADE_HEADLESS where no GUI widget is involved."""
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import esper
@@ -21,6 +22,15 @@ def pytest_sessionstart(session: pytest.Session) -> None:
     from polygolf.engine.physics.jit import compile_kernels
 
     compile_kernels()
+    # arcade reads ARCADE_HEADLESS once, when it is imported. `render` run in-process sets it for its
+    # offscreen context: had it been first to import arcade in a worker, every window test after it
+    # there failed (pyglet without xlib). Imported here, under Xvfb, arcade keeps real windows and
+    # `render` draws in a hidden one.
+    if not os.environ.get("ARCADE_HEADLESS"):
+        try:
+            import arcade  # noqa: F401
+        except Exception:  # noqa: BLE001 (no display at all: the window tests are skipped or fail on their own)
+            pass
 
 
 @pytest.fixture(autouse=True)

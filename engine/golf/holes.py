@@ -9,7 +9,7 @@ from collections.abc import Collection, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from polygolf.engine.golf.layout import HoleLayout, layout_hole, point_clearance, tile_path
+from polygolf.engine.golf.layout import HoleLayout, layout_hole, pattern_items, point_clearance, tile_path
 from polygolf.engine.loading.course import (
     HAZARDS,
     CoursesFile,
@@ -21,7 +21,7 @@ from polygolf.engine.loading.course import (
 )
 from polygolf.engine.loading.paths import HOLES_DIR, content_roots, misplaced_folders
 from polygolf.engine.loading.yamlsource import ContentError, format_loc, line_of, load_yaml, validate
-from polygolf.engine.physics.polygon import about_centroid, bounding_radius, centroid, placed
+from polygolf.engine.physics.polygon import about_centroid, bounding_radius, centroid
 from polygolf.engine.physics.settings import LINEAR_SLOP
 
 RANDOM_NINE_ID = "random-nine"  # the course the game builds from a seed (`golf.nine`): no content's
@@ -86,11 +86,8 @@ def _pattern_reaching(parsed: ParsedHole, library: TileLibrary, layout: HoleLayo
     """The first tile whose pattern puts a `hazard` item within `need` of (x, y) (a windmill: its
     sweep), else `default`: a pattern's item may reach far past its tile (QA8: a box 2 km wide on
     tiles[1] blocked the tee and was blamed on tiles[0], which has no pattern)."""
-    size = layout.tile_size
     for k, tile in enumerate(parsed.spec.tiles):
-        cx, cy = (tile.at[0] + 0.5) * size, (tile.at[1] + 0.5) * size
-        items = [placed(item.outline(), cx, cy, math.radians(tile.rotate)) for item in library.patterns[tile.pattern]
-                 if item.hazard == hazard]
+        items = [outline for item, outline in pattern_items(tile, library) if item.hazard == hazard]
         if hazard == "windmill":
             if any(math.dist((x, y), centroid(o)) < bounding_radius(about_centroid(o)[0]) + need for o in items):
                 return k

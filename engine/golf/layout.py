@@ -8,7 +8,7 @@ from collections import defaultdict, deque
 from dataclasses import dataclass, field
 
 from polygolf.engine.components import Material
-from polygolf.engine.loading.course import OPPOSITE, SIDES, STEP, Gate, HoleSpec, TileLibrary
+from polygolf.engine.loading.course import OPPOSITE, SIDES, STEP, Gate, HoleSpec, TileLibrary, TilePlacement
 from polygolf.engine.physics import polygon
 
 Rect = tuple[float, float, float, float]
@@ -65,6 +65,14 @@ def _narrower(a, b):
     return a if isinstance(a, Gate) else b
 
 
+def pattern_items(tile: TilePlacement, lib: TileLibrary) -> list[tuple]:
+    """Each item of the tile's pattern with its outline where the tile puts it (world coordinates)."""
+    size = lib.tile_size
+    cx, cy = (tile.at[0] + 0.5) * size, (tile.at[1] + 0.5) * size
+    turn = math.radians(tile.rotate)
+    return [(item, polygon.placed(item.outline(), cx, cy, turn)) for item in lib.patterns[tile.pattern]]
+
+
 def layout_hole(spec: HoleSpec, lib: TileLibrary) -> HoleLayout:
     size, thick = lib.tile_size, lib.wall_thickness
     placed = {t.at: t for t in spec.tiles}
@@ -106,11 +114,9 @@ def layout_hole(spec: HoleSpec, lib: TileLibrary) -> HoleLayout:
 
     obstacles, bumpers, zones, windmills = [], [], [], []
     for tile in spec.tiles:
-        cx, cy = (tile.at[0] + 0.5) * size, (tile.at[1] + 0.5) * size
         turn = math.radians(tile.rotate)
         c, s = math.cos(turn), math.sin(turn)
-        for item in lib.patterns[tile.pattern]:
-            outline = polygon.placed(item.outline(), cx, cy, turn)
+        for item, outline in pattern_items(tile, lib):
             material = Material(item.restitution, item.friction)
             if item.hazard == "wall":
                 obstacles.append((outline, material))
